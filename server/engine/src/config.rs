@@ -1,0 +1,366 @@
+//! Configuration of a simulation and its validation.
+//!
+//! Defaults are the canonical "paper scene" of DESIGN.md (section 4 of the paper): density 10 bodies
+//! per unit volume, shape radius R = 0.2, depth-4 sphere trees, dt = 1/60 s. Every field is checked
+//! by [`SimConfig::validate`], which names the field and the allowed range in its error.
+
+use serde::{Deserialize, Serialize};
+
+use crate::perception::{CameraConfig, Display, PerceptualModel};
+
+/// Largest body count the engine accepts. Memory is about 200 bytes per body plus the pair lists;
+/// 2,000,000 bodies is roughly 1 GiB at the paper's density, the most a frame can touch usefully.
+pub const MAX_BODIES: u32 = 2_000_000;
+/// Deepest sphere tree: a depth-7 tree of this shape has ~14,000 leaves and its octree cells are
+/// smaller than f32 resolves relative to R at extreme scales.
+pub const MAX_DEPTH: usize = 6;
+/// Far-from-origin limit on the volume's corner (scene units). World state is f64 and every narrow
+/// phase test is done relative to the pair, so precision is lost only in `position + velocity * dt`:
+/// at 1e9 one f64 ulp is ~1e-7, which is still below a thousandth of a step at the slowest speed
+/// of the default scene. Beyond that, integration itself degrades, so configs are refused.
+pub const MAX_ORIGIN: f64 = 1e9;
+
+/// A config field outside its allowed range.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("invalid config: `{field}` = {value}: {expected}")]
+pub struct ConfigError {
+    /// Dotted path of the offending field, e.g. `scene.shape_radius`.
+    pub field: &'static str,
+    /// The rejected value, rendered.
+    pub value: String,
+    /// What would have been accepted.
+    pub expected: String,
+}
+
+impl ConfigError {
+    pub(crate) fn new(
+        field: &'static str,
+        value: impl std::fmt::Display,
+        expected: impl Into<String>,
+    ) -> Self {
+        Self {
+            field,
+            value: value.to_string(),
+            expected: expected.into(),
+        }
+    }
+}
+
+pub(crate) fn check_finite_positive(field: &'static str, v: f64) -> Result<(), ConfigError> {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(ConfigError::new(field, v, "must be finite and > 0"))
+    }
+}
+
+pub(crate) fn check_finite_range(
+    field: &'static str,
+    v: f64,
+    lo: f64,
+    hi: f64,
+) -> Result<(), ConfigError> {
+    if v.is_finite() && (lo..=hi).contains(&v) {
+        Ok(())
+    } else {
+        Err(ConfigError::new(
+            field,
+            v,
+            format!("must be finite and in [{lo}, {hi}]"),
+        ))
+    }
+}
+
+/// The scene: how many bodies, where, how fast (DESIGN.md "Scene").
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SceneConfig {
+    /// Number of bodies, 1..=2,000,000.
+    pub bodies: u32,
+    /// Seed of the scene generator.
+    pub seed: u64,
+    /// Bodies per unit volume; the cube side is (N / density)^(1/3).
+    pub density: f64,
+    /// Bounding radius R of the star shape (scene units).
+    pub shape_radius: f64,
+    /// Sphere-tree depth, 1..=6 (paper: 4).
+    pub depth: u32,
+    /// Time step (seconds).
+    pub dt: f64,
+    /// Speed range (units/s), uniform.
+    pub min_speed: f64,
+    /// Upper end of the speed range (units/s).
+    pub max_speed: f64,
+    /// Angular speed is uniform in [0, max_spin] rad/s about a random axis.
+    pub max_spin: f64,
+    /// World position of the volume's minimum corner (scene units).
+    pub origin: [f64; 3],
+}
+
+impl Default for SceneConfig {
+    fn default() -> Self {
+        Self {
+            bodies: 500,
+            seed: 1,
+            density: 10.0,
+            shape_radius: 0.2,
+            depth: 4,
+            dt: 1.0 / 60.0,
+            min_speed: 0.2,
+            max_speed: 1.0,
+            max_spin: std::f64::consts::PI,
+            origin: [0.0; 3],
+        }
+    }
+}
+
+impl SceneConfig {
+    /// The paper scene with `bodies` bodies and `seed`, everything else default.
+    pub fn paper(bodies: u32, seed: u64) -> Self {
+        Self {
+            bodies,
+            seed,
+            ..Self::default()
+        }
+    }
+
+    /// Side of the cubic volume: density is held constant as N grows (paper section 4).
+    pub fn volume_side(&self) -> f64 {
+        (f64::from(self.bodies) / self.density).cbrt()
+    }
+
+    /// Check every field; the error names the first offending one.
+    pub fn validate(&self) -> Result<(), ConfigError> {
+        if self.bodies == 0 || self.bodies > MAX_BODIES {
+            return Err(ConfigError::new(
+                "scene.bodies",
+                self.bodies,
+                format!("must be in 1..={MAX_BODIES}"),
+            ));
+        }
+        check_finite_positive("scene.density", self.density)?;
+        check_finite_range("scene.shape_radius", self.shape_radius, 1e-6, 1e6)?;
+        if !(1..=MAX_DEPTH as u32).contains(&self.depth) {
+            return Err(ConfigError::new(
+                "scene.depth",
+                self.depth,
+                format!("must be in 1..={MAX_DEPTH}"),
+            ));
+        }
+        check_finite_range("scene.dt", self.dt, 1e-7, 10.0)?;
+        check_finite_range("scene.min_speed", self.min_speed, 0.0, 1e12)?;
+        check_finite_range("scene.max_speed", self.max_speed, self.min_speed, 1e12)?;
+        check_finite_range("scene.max_spin", self.max_spin, 0.0, 1e6)?;
+        for (field, v) in ["scene.origin.x", "scene.origin.y", "scene.origin.z"]
+            .into_iter()
+            .zip(self.origin)
+        {
+            check_finite_range(field, v, -MAX_ORIGIN, MAX_ORIGIN)?;
+        }
+        let side = self.volume_side();
+        if !side.is_finite() || side <= 0.0 {
+            return Err(ConfigError::new(
+                "scene.density",
+                self.density,
+                "gives a non-finite volume side",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// When the narrow phase stops (paper section 2, "interruptible").
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BudgetSpec {
+    /// Never interrupt: every candidate pair is resolved exactly.
+    Exact,
+    /// Interrupt before the first sphere test: every candidate pair is deemed colliding.
+    InterruptAtZero,
+    /// Wall-clock budget for the narrow phase, in milliseconds, measured by the caller's clock.
+    WallMs(f64),
+    /// Deterministic budget: at most this many sphere tests per frame.
+    SphereTests(u64),
+    /// A fraction of the exact narrow phase's cost (sphere tests per frame, calibrated on this scene),
+    /// so a study transfers between machines of very different speed.
+    FractionOfExact(f64),
+}
+
+impl Default for BudgetSpec {
+    fn default() -> Self {
+        Self::Exact
+    }
+}
+
+impl BudgetSpec {
+    /// Check the budget's parameter.
+    pub fn validate(&self) -> Result<(), ConfigError> {
+        match *self {
+            Self::Exact | Self::InterruptAtZero | Self::SphereTests(_) => Ok(()),
+            Self::WallMs(ms) => check_finite_range("budget.wall_ms", ms, 0.0, 60_000.0),
+            Self::FractionOfExact(f) => check_finite_range("budget.fraction_of_exact", f, 0.0, 1.0),
+        }
+    }
+}
+
+/// Which scheduler orders the narrow-phase work (paper sections 2 and 4; `ExpectedGain` is ours).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SchedulerKind {
+    /// Every active pair descends one level per round, in list order.
+    RoundRobin,
+    /// Each pair is resolved completely before the next, in list order.
+    Sequential,
+    /// Pairs sorted by perceptual priority, then resolved sequentially.
+    SortedSequential,
+    /// Two queues split by an eccentricity threshold; round-robin inside each, inner queue first.
+    PriorityOnly,
+    /// Inner queue sorted and sequential, outer queue round-robin.
+    PrioritySorted,
+    /// Ours: greedy on expected perceived error removed per sphere test.
+    ExpectedGain,
+}
+
+impl SchedulerKind {
+    /// Every scheduler, in the order tables list them.
+    pub const ALL: [SchedulerKind; 6] = [
+        Self::RoundRobin,
+        Self::Sequential,
+        Self::SortedSequential,
+        Self::PriorityOnly,
+        Self::PrioritySorted,
+        Self::ExpectedGain,
+    ];
+
+    /// Stable short name (CLI flags, CSV columns).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::RoundRobin => "round-robin",
+            Self::Sequential => "sequential",
+            Self::SortedSequential => "sorted-sequential",
+            Self::PriorityOnly => "priority-only",
+            Self::PrioritySorted => "priority-sorted",
+            Self::ExpectedGain => "expected-gain",
+        }
+    }
+
+    /// Parse a [`Self::name`].
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|k| k.name() == s)
+    }
+
+    /// Whether the scheduler needs a perceptual priority per pair (and so a fixation).
+    pub fn needs_priority(self) -> bool {
+        !matches!(self, Self::RoundRobin | Self::Sequential)
+    }
+}
+
+/// Everything a [`crate::Simulation`] is built from.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SimConfig {
+    /// The scene.
+    pub scene: SceneConfig,
+    /// Narrow-phase budget.
+    pub budget: BudgetSpec,
+    /// Scheduler.
+    pub scheduler: SchedulerKind,
+    /// Priority-queue threshold: pairs whose centre of collision is within this eccentricity
+    /// (degrees of visual angle) of the fixation go to the first queue.
+    pub eccentricity_threshold_deg: f64,
+    /// Model used to prioritise collisions.
+    pub schedule_model: PerceptualModel,
+    /// Model used to measure perceived inaccuracy P.
+    pub measure_model: PerceptualModel,
+    /// Compute the exact answer for every deemed pair (true false positives, true Δ and P).
+    pub audit: bool,
+    /// Display geometry (for pixels and degrees of visual angle).
+    pub display: Display,
+    /// Camera placement.
+    pub camera: CameraConfig,
+    /// Frames run in exact mode on a private copy of the scene to calibrate
+    /// [`BudgetSpec::FractionOfExact`].
+    pub calibration_frames: u32,
+}
+
+impl Default for SimConfig {
+    fn default() -> Self {
+        Self {
+            scene: SceneConfig::default(),
+            budget: BudgetSpec::Exact,
+            scheduler: SchedulerKind::PriorityOnly,
+            eccentricity_threshold_deg: 5.0,
+            schedule_model: PerceptualModel::default(),
+            measure_model: PerceptualModel::default(),
+            audit: false,
+            display: Display::default(),
+            camera: CameraConfig::default(),
+            calibration_frames: 30,
+        }
+    }
+}
+
+impl SimConfig {
+    /// Check every field; the error names the first offending one.
+    pub fn validate(&self) -> Result<(), ConfigError> {
+        self.scene.validate()?;
+        self.budget.validate()?;
+        check_finite_range(
+            "eccentricity_threshold_deg",
+            self.eccentricity_threshold_deg,
+            0.0,
+            180.0,
+        )?;
+        self.schedule_model.validate("schedule_model")?;
+        self.measure_model.validate("measure_model")?;
+        self.display.validate()?;
+        self.camera.validate()?;
+        if matches!(self.budget, BudgetSpec::FractionOfExact(_)) && self.calibration_frames == 0 {
+            return Err(ConfigError::new(
+                "calibration_frames",
+                0,
+                "must be >= 1 with budget fraction_of_exact",
+            ));
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_valid_and_errors_name_the_field() {
+        SimConfig::default().validate().expect("defaults valid");
+        let mut c = SimConfig::default();
+        c.scene.bodies = 0;
+        assert_eq!(c.validate().map_err(|e| e.field), Err("scene.bodies"));
+        c.scene.bodies = MAX_BODIES + 1;
+        let e = c.validate().expect_err("too many");
+        assert!(e.to_string().contains("2000000"), "{e}");
+        let mut c = SimConfig::default();
+        c.scene.shape_radius = f64::NAN;
+        assert_eq!(c.validate().map_err(|e| e.field), Err("scene.shape_radius"));
+        let mut c = SimConfig::default();
+        c.scene.dt = -1.0;
+        assert_eq!(c.validate().map_err(|e| e.field), Err("scene.dt"));
+        let mut c = SimConfig::default();
+        c.scene.depth = 7;
+        assert_eq!(c.validate().map_err(|e| e.field), Err("scene.depth"));
+        let mut c = SimConfig::default();
+        c.budget = BudgetSpec::WallMs(-1.0);
+        assert_eq!(c.validate().map_err(|e| e.field), Err("budget.wall_ms"));
+        let mut c = SimConfig::default();
+        c.scene.origin[1] = 1e12;
+        assert_eq!(c.validate().map_err(|e| e.field), Err("scene.origin.y"));
+    }
+
+    #[test]
+    fn scheduler_names_round_trip() {
+        for k in SchedulerKind::ALL {
+            assert_eq!(SchedulerKind::from_name(k.name()), Some(k));
+        }
+        assert_eq!(SchedulerKind::from_name("nope"), None);
+    }
+}

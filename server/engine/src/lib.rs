@@ -1,0 +1,56 @@
+//! # foveal-engine
+//!
+//! The simulation of O'Sullivan, "A Model of Collision Perception for Real-Time Animation": many
+//! identical star-shaped rigid bodies in a box, a sweep-and-prune broad phase, an interruptible
+//! sphere-tree narrow phase under a per-frame budget, and perceptual scheduling of the narrow phase
+//! around the viewer's fixation. Pure, synchronous and deterministic: no threads, no I/O, and no
+//! clock but the [`Clock`] the caller hands to [`Simulation::step`].
+//!
+//! # Layout
+//! - [`config`]: scene, budget, scheduler and model configuration, validated with errors that name
+//!   the field and the range.
+//! - [`shape`], [`sphere_tree`]: the star shape and its flat, level-ordered octree sphere tree.
+//! - [`world`]: body state and integration (walls reflect).
+//! - [`broad_phase`]: sweep and prune with temporal coherence.
+//! - [`narrow_phase`]: per-pair traversal state, one level of one tree per step.
+//! - [`budget`]: wall-clock and sphere-test budgets, the [`Clock`] trait.
+//! - [`schedule`]: round-robin, sequential, sorted, priority-queue and expected-gain schedulers.
+//! - [`perception`], [`fixation`]: camera, display, visual angle, F1/F2/F3.
+//! - [`response`]: velocity exchange.
+//! - [`report`]: the frame record, the phase profile and the audit.
+//! - [`simulation`]: one frame of the main loop; [`export`]: a frame as JSON.
+//!
+//! ```
+//! use foveal_engine::{FrozenClock, Fixation, SimConfig, Simulation};
+//! let mut cfg = SimConfig::default();
+//! cfg.scene.bodies = 100;
+//! let mut sim = Simulation::new(cfg).expect("valid config");
+//! let report = sim.step(Some(Fixation::at(0.5, 0.5)), &FrozenClock);
+//! assert_eq!(report.deemed, 0); // the default budget is exact
+//! ```
+
+pub mod broad_phase;
+pub mod budget;
+pub mod config;
+pub mod export;
+pub mod fixation;
+pub mod math;
+pub mod narrow_phase;
+pub mod perception;
+pub mod report;
+pub mod response;
+pub mod rng;
+pub mod schedule;
+pub mod shape;
+pub mod simulation;
+pub mod sphere_tree;
+pub mod world;
+
+pub use budget::{Clock, FrameBudget, FrozenClock};
+pub use config::{BudgetSpec, ConfigError, SceneConfig, SchedulerKind, SimConfig};
+pub use fixation::Fixation;
+pub use perception::{
+    CameraConfig, Display, EccentricityUnit, PerceptualFunction, PerceptualModel,
+};
+pub use report::{AuditReport, FrameReport, PhaseProfile};
+pub use simulation::Simulation;

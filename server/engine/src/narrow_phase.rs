@@ -1,0 +1,500 @@
+//! Interruptible sphere-tree narrow phase (paper section 2).
+//!
+//! Each candidate pair keeps the list of sphere pairs still to test. One step descends one level of
+//! one tree: every sphere pair on the list is replaced by the pairs (child, other) that overlap. The
+//! four outcomes of section 2 map to [`StepOutcome`]: a leaf-leaf overlap resolves the pair as
+//! colliding, an empty list resolves it as separate, anything else leaves it active, and a pair still
+//! active when the budget runs out is *deemed* colliding by the caller.
+//!
+//! All tests of a pair run in body A's frame: body B's spheres are mapped by one relative rotation and
+//! translation ([`PairFrame`]) computed once per pair, so coordinates stay of the order of R however
+//! far from the origin the pair is, and f32 suffices. Kernels compare squared distances; coincident
+//! centres are not special (distance 0 overlaps any pair of radii).
+
+use glam::Vec4;
+
+use crate::math::{LMat3, LVec3, Vec3};
+use crate::sphere_tree::SphereTree;
+use crate::world::World;
+
+/// Marker for "no sphere pair tested yet".
+const NONE: u16 = u16::MAX;
+
+/// Body B's frame expressed in body A's frame: `x_A = m * x_B + t`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PairFrame {
+    m: LMat3,
+    t: LVec3,
+}
+
+impl PairFrame {
+    /// Relative frame of bodies `a` and `b`. The translation is formed in f64 before rounding, so a
+    /// pair far from the origin is as exact as one at it.
+    #[inline]
+    pub fn new(world: &World, a: usize, b: usize) -> Self {
+        let ra = world.basis[a].transpose();
+        let d = (world.position[b] - world.position[a]).as_vec3();
+        Self {
+            m: ra * world.basis[b],
+            t: ra * LVec3::from(d),
+        }
+    }
+
+    /// Centre of B-sphere `s` in A's frame.
+    #[inline]
+    pub fn map(&self, s: Vec4) -> LVec3 {
+        self.m * LVec3::from_vec4(s) + self.t
+    }
+}
+
+/// Whether sphere `a` (A's frame, radius in w) overlaps a sphere at `b` (A's frame) of radius `rb`.
+/// Touching counts as overlapping.
+#[inline]
+pub fn spheres_overlap(a: Vec4, b: LVec3, rb: f32) -> bool {
+    let r = a.w + rb;
+    (LVec3::from_vec4(a) - b).length_squared() <= r * r
+}
+
+/// Where a pair stands.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PairStatus {
+    /// Not yet tested at all.
+    Untested,
+    /// Overlap found above leaf level; more steps needed.
+    Active,
+    /// Resolved: a leaf sphere of each overlaps (a real collision).
+    Colliding,
+    /// Resolved: no overlapping spheres (not colliding).
+    Separate,
+    /// Interrupted while untested or active: deemed colliding (section 2).
+    Deemed,
+}
+
+impl PairStatus {
+    /// Whether the pair still needs work.
+    #[inline]
+    pub fn is_open(self) -> bool {
+        matches!(self, Self::Untested | Self::Active)
+    }
+
+    /// Whether the pair ends up on the collision list (real or deemed).
+    #[inline]
+    pub fn is_collision(self) -> bool {
+        matches!(self, Self::Colliding | Self::Deemed)
+    }
+}
+
+/// Result of one step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StepOutcome {
+    /// Leaf-leaf overlap: colliding, resolved.
+    Hit,
+    /// No overlap left: not colliding, resolved.
+    Separate,
+    /// Overlap above leaf level: stays active.
+    Active,
+}
+
+/// Traversal state of one candidate pair.
+#[derive(Debug, Clone, Copy)]
+pub struct PairState {
+    /// First body (smaller id).
+    pub a: u32,
+    /// Second body.
+    pub b: u32,
+    /// Status.
+    pub status: PairStatus,
+    /// Current level of A's and B's tree (1-based; 0 while untested).
+    pub levels: [u8; 2],
+    /// Level at which the pair was resolved (max of the two trees' levels), 0 if not resolved.
+    pub resolved_level: u8,
+    /// Last overlapping sphere pair found (A index, B index), for the gap estimate of section 3.
+    pub last: [u16; 2],
+    /// Scheduling priority (perceptual importance; higher first).
+    pub priority: f32,
+    /// Inside the priority-queue eccentricity threshold.
+    pub inner: bool,
+    list_start: u32,
+    list_len: u32,
+    frame: PairFrame,
+}
+
+impl PairState {
+    fn new(a: u32, b: u32) -> Self {
+        Self {
+            a,
+            b,
+            status: PairStatus::Untested,
+            levels: [0, 0],
+            resolved_level: 0,
+            last: [NONE, NONE],
+            priority: 0.0,
+            inner: false,
+            list_start: 0,
+            list_len: 0,
+            frame: PairFrame {
+                m: LMat3::IDENTITY,
+                t: LVec3::ZERO,
+            },
+        }
+    }
+
+    /// Sphere pairs still to test (0 once resolved).
+    pub fn pending(&self) -> u32 {
+        if self.status == PairStatus::Active {
+            self.list_len
+        } else {
+            0
+        }
+    }
+}
+
+/// The two spheres whose overlap is the pair's current evidence, in world coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Evidence {
+    /// Centre of the A sphere (world).
+    pub center_a: Vec3,
+    /// Centre of the B sphere (world).
+    pub center_b: Vec3,
+    /// Gap estimate g: distance between the two centres (section 3).
+    pub gap: f64,
+    /// Centre of collision: midpoint of the segment of the centre line inside both spheres.
+    pub centre_of_collision: Vec3,
+}
+
+/// Midpoint of the part of the segment from `ca` to `cb` that lies in both spheres (or of the gap
+/// between them if they do not overlap). Coincident centres give `ca`.
+pub fn centre_of_collision(ca: Vec3, ra: f64, cb: Vec3, rb: f64) -> Vec3 {
+    let d = cb - ca;
+    let len = d.length();
+    if len <= 0.0 {
+        return ca;
+    }
+    ca + d * ((len + ra - rb) * 0.5 / len)
+}
+
+/// All candidate pairs of a frame and their traversal states.
+#[derive(Debug, Clone, Default)]
+pub struct NarrowPhase {
+    /// Pair states, in broad-phase order.
+    pub pairs: Vec<PairState>,
+    arena: Vec<[u16; 2]>,
+    /// Sphere tests done this frame.
+    pub tests: u64,
+}
+
+impl NarrowPhase {
+    /// Start a frame with these candidate pairs. Buffers are reused.
+    pub fn reset(&mut self, candidates: &[(u32, u32)]) {
+        self.pairs.clear();
+        self.pairs
+            .extend(candidates.iter().map(|&(a, b)| PairState::new(a, b)));
+        self.arena.clear();
+        self.tests = 0;
+    }
+
+    /// Advance pair `i` by one level of one tree.
+    pub fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
+        let depth = tree.depth() as u8;
+        let p = self.pairs[i];
+        debug_assert!(p.status.is_open());
+        if p.status == PairStatus::Untested {
+            let frame = PairFrame::new(world, p.a as usize, p.b as usize);
+            let root = tree.sphere(0);
+            self.tests += 1;
+            let st = &mut self.pairs[i];
+            st.frame = frame;
+            if !spheres_overlap(root, frame.map(root), root.w) {
+                return resolve(st, PairStatus::Separate, 1);
+            }
+            st.last = [0, 0];
+            st.levels = [1, 1];
+            if depth == 1 {
+                return resolve(st, PairStatus::Colliding, 1);
+            }
+            st.status = PairStatus::Active;
+            st.list_start = self.arena.len() as u32;
+            st.list_len = 1;
+            self.arena.push([0, 0]);
+            return StepOutcome::Active;
+        }
+        // Descend the shallower tree (A on ties), so both reach the leaves together.
+        let descend_a = p.levels[0] <= p.levels[1] && p.levels[0] < depth || p.levels[1] >= depth;
+        let new_levels = if descend_a {
+            [p.levels[0] + 1, p.levels[1]]
+        } else {
+            [p.levels[0], p.levels[1] + 1]
+        };
+        let at_leaves = new_levels[0] == depth && new_levels[1] == depth;
+        let frame = p.frame;
+        let start = self.arena.len();
+        let mut tests = 0u64;
+        let (lo, hi) = (p.list_start as usize, (p.list_start + p.list_len) as usize);
+        let mut hit = None;
+        'outer: for k in lo..hi {
+            let [sa, sb] = self.arena[k];
+            if descend_a {
+                let b = tree.sphere(sb as usize);
+                let cb = frame.map(b);
+                for ca in tree.children(sa as usize) {
+                    tests += 1;
+                    if spheres_overlap(tree.sphere(ca), cb, b.w) {
+                        if at_leaves {
+                            hit = Some([ca as u16, sb]);
+                            break 'outer;
+                        }
+                        self.arena.push([ca as u16, sb]);
+                    }
+                }
+            } else {
+                let a = tree.sphere(sa as usize);
+                for cbi in tree.children(sb as usize) {
+                    let b = tree.sphere(cbi);
+                    tests += 1;
+                    if spheres_overlap(a, frame.map(b), b.w) {
+                        if at_leaves {
+                            hit = Some([sa, cbi as u16]);
+                            break 'outer;
+                        }
+                        self.arena.push([sa, cbi as u16]);
+                    }
+                }
+            }
+        }
+        self.tests += tests;
+        let st = &mut self.pairs[i];
+        st.levels = new_levels;
+        let level = new_levels[0].max(new_levels[1]);
+        if let Some(last) = hit {
+            st.last = last;
+            return resolve(st, PairStatus::Colliding, level);
+        }
+        let found = self.arena.len() - start;
+        if found == 0 {
+            return resolve(st, PairStatus::Separate, level);
+        }
+        st.last = self.arena[self.arena.len() - 1];
+        st.list_start = start as u32;
+        st.list_len = found as u32;
+        StepOutcome::Active
+    }
+
+    /// Step pair `i` until it is resolved (no budget).
+    pub fn resolve_fully(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
+        loop {
+            let o = self.step(i, tree, world);
+            if o != StepOutcome::Active {
+                return o;
+            }
+        }
+    }
+
+    /// Deem every open pair colliding (interruption, section 2). Returns how many were deemed.
+    pub fn deem_open(&mut self) -> u32 {
+        let mut n = 0;
+        for p in &mut self.pairs {
+            if p.status.is_open() {
+                p.status = PairStatus::Deemed;
+                n += 1;
+            }
+        }
+        n
+    }
+
+    /// The evidence behind pair `i`'s current state: the last overlapping sphere pair, or the two
+    /// body centres and bounding spheres if nothing was tested (section 3's gap estimate).
+    pub fn evidence(&self, i: usize, tree: &SphereTree, world: &World) -> Evidence {
+        let p = &self.pairs[i];
+        let (pa, pb) = (world.position[p.a as usize], world.position[p.b as usize]);
+        if p.last[0] == NONE {
+            let r = tree.root_radius();
+            return Evidence {
+                center_a: pa,
+                center_b: pb,
+                gap: (pb - pa).length(),
+                centre_of_collision: centre_of_collision(pa, r, pb, r),
+            };
+        }
+        let sa = tree.sphere(p.last[0] as usize);
+        let sb = tree.sphere(p.last[1] as usize);
+        let basis = glam::Mat3::from(world.basis[p.a as usize]).as_dmat3();
+        let local_a = LVec3::from_vec4(sa).as_dvec3();
+        let local_b = p.frame.map(sb).as_dvec3();
+        let (ca, cb) = (pa + basis * local_a, pa + basis * local_b);
+        Evidence {
+            center_a: ca,
+            center_b: cb,
+            gap: (local_b - local_a).length(),
+            centre_of_collision: centre_of_collision(ca, f64::from(sa.w), cb, f64::from(sb.w)),
+        }
+    }
+}
+
+fn resolve(st: &mut PairState, status: PairStatus, level: u8) -> StepOutcome {
+    st.status = status;
+    st.resolved_level = level;
+    st.list_len = 0;
+    if status == PairStatus::Colliding {
+        StepOutcome::Hit
+    } else {
+        StepOutcome::Separate
+    }
+}
+
+/// The exact answer by brute force: whether any leaf sphere of `a` overlaps any leaf sphere of `b`
+/// (DESIGN.md "Exact answer"), with the same kernel and the same relative frame as the traversal.
+pub fn brute_force_colliding(tree: &SphereTree, world: &World, a: usize, b: usize) -> bool {
+    let f = PairFrame::new(world, a, b);
+    tree.leaves().any(|j| {
+        let sb = tree.sphere(j);
+        let cb = f.map(sb);
+        tree.leaves()
+            .any(|i| spheres_overlap(tree.sphere(i), cb, sb.w))
+    })
+}
+
+/// True separation of two bodies' leaf-sphere sets: the smallest `|ca - cb| - ra - rb` over leaf
+/// pairs (<= 0 when they collide), with the closest pair's centres in world coordinates. Found by
+/// branch and bound over both trees, which gives the same minimum as the full leaf-by-leaf scan.
+pub fn separation(tree: &SphereTree, world: &World, a: usize, b: usize) -> (f64, Vec3, Vec3) {
+    let f = PairFrame::new(world, a, b);
+    let dist = |sa: usize, sb: usize| -> f32 {
+        let (x, y) = (tree.sphere(sa), tree.sphere(sb));
+        (LVec3::from_vec4(x) - f.map(y)).length() - x.w - y.w
+    };
+    let depth = tree.depth();
+    let mut best = (f32::INFINITY, 0usize, 0usize);
+    let mut stack = vec![(0usize, 0usize, 1usize, 1usize)];
+    while let Some((sa, sb, la, lb)) = stack.pop() {
+        let d = dist(sa, sb);
+        // Lower bound: a parent sphere contains its leaves, so no leaf pair below is closer.
+        if d >= best.0 {
+            continue;
+        }
+        if la == depth && lb == depth {
+            best = (d, sa, sb);
+            continue;
+        }
+        if la <= lb && la < depth || lb >= depth {
+            stack.extend(tree.children(sa).map(|c| (c, sb, la + 1, lb)));
+        } else {
+            stack.extend(tree.children(sb).map(|c| (sa, c, la, lb + 1)));
+        }
+    }
+    let pa = world.position[a];
+    let basis = glam::Mat3::from(world.basis[a]).as_dmat3();
+    let ca = pa + basis * tree.center(best.1).as_dvec3();
+    let cb = pa + basis * f.map(tree.sphere(best.2)).as_dvec3();
+    (f64::from(best.0), ca, cb)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::SceneConfig;
+    use crate::math::Quat;
+    use crate::shape::Star;
+    use proptest::prelude::*;
+
+    fn two_bodies(d: Vec3, qa: Quat, qb: Quat) -> World {
+        let mut w = World::generate(&SceneConfig::paper(2, 1));
+        w.position = vec![Vec3::new(1.0, 1.0, 1.0), Vec3::new(1.0, 1.0, 1.0) + d];
+        w.orientation = vec![qa, qb];
+        w.refresh_bases();
+        w
+    }
+
+    fn run_exact(tree: &SphereTree, w: &World) -> bool {
+        let mut np = NarrowPhase::default();
+        np.reset(&[(0, 1)]);
+        np.resolve_fully(0, tree, w) == StepOutcome::Hit
+    }
+
+    fn quat(v: [f64; 4]) -> Quat {
+        let q = Quat::from_xyzw(v[0], v[1], v[2], v[3]);
+        if q.length() > 1e-3 {
+            q.normalize()
+        } else {
+            Quat::IDENTITY
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+        #[test]
+        fn traversal_to_completion_equals_brute_force(
+            d in prop::array::uniform3(-0.5f64..0.5), qa in prop::array::uniform4(-1f64..1.0),
+            qb in prop::array::uniform4(-1f64..1.0), depth in 1usize..=5, scale in prop::sample::select(vec![1.0, 0.5, 0.125])
+        ) {
+            let tree = SphereTree::build(Star::new(0.2), depth).expect("tree");
+            let w = two_bodies(Vec3::from_array(d) * scale, quat(qa), quat(qb));
+            prop_assert_eq!(run_exact(&tree, &w), brute_force_colliding(&tree, &w, 0, 1));
+            let (sep, _, _) = separation(&tree, &w, 0, 1);
+            if brute_force_colliding(&tree, &w, 0, 1) {
+                prop_assert!(sep <= 1e-6, "colliding pair with separation {}", sep);
+            } else {
+                prop_assert!(sep >= -1e-6, "separate pair with separation {}", sep);
+            }
+        }
+    }
+
+    #[test]
+    fn coincident_nested_and_far_pairs() {
+        let tree = SphereTree::build(Star::new(0.2), 4).expect("tree");
+        let q = Quat::from_rotation_z(0.3);
+        // Coincident centres: the cores overlap.
+        assert!(run_exact(&tree, &two_bodies(Vec3::ZERO, Quat::IDENTITY, q)));
+        // Far apart: resolved separate at level 1 after one test.
+        let w = two_bodies(Vec3::new(0.5, 0.0, 0.0), Quat::IDENTITY, q);
+        let mut np = NarrowPhase::default();
+        np.reset(&[(0, 1)]);
+        assert_eq!(np.step(0, &tree, &w), StepOutcome::Separate);
+        assert_eq!((np.tests, np.pairs[0].resolved_level), (1, 1));
+        // Spike tips just touching along x (axis-aligned): tips at 0.2 each, leaves stick out, so a
+        // centre distance of 0.4 collides and one of 0.5 does not.
+        assert!(run_exact(
+            &tree,
+            &two_bodies(Vec3::new(0.4, 0.0, 0.0), Quat::IDENTITY, Quat::IDENTITY)
+        ));
+        // Spikes interleaved diagonally: bounding spheres overlap, shapes don't.
+        let w = two_bodies(Vec3::new(0.3, 0.3, 0.0), Quat::IDENTITY, Quat::IDENTITY);
+        assert_eq!(run_exact(&tree, &w), brute_force_colliding(&tree, &w, 0, 1));
+    }
+
+    #[test]
+    fn levels_descend_one_tree_at_a_time() {
+        let tree = SphereTree::build(Star::new(0.2), 4).expect("tree");
+        let w = two_bodies(Vec3::new(0.05, 0.0, 0.0), Quat::IDENTITY, Quat::IDENTITY);
+        let mut np = NarrowPhase::default();
+        np.reset(&[(0, 1)]);
+        let mut seen = vec![];
+        loop {
+            let o = np.step(0, &tree, &w);
+            seen.push(np.pairs[0].levels);
+            if o != StepOutcome::Active {
+                assert_eq!(o, StepOutcome::Hit);
+                break;
+            }
+        }
+        assert_eq!(
+            seen,
+            vec![[1, 1], [2, 1], [2, 2], [3, 2], [3, 3], [4, 3], [4, 4]]
+        );
+        assert_eq!(np.pairs[0].resolved_level, 4);
+        let e = np.evidence(0, &tree, &w);
+        assert!(e.gap < 0.5 * 0.2, "leaf-level gap is small: {}", e.gap);
+    }
+
+    #[test]
+    fn centre_of_collision_is_midpoint_of_overlap() {
+        let c = centre_of_collision(Vec3::ZERO, 1.0, Vec3::new(1.5, 0.0, 0.0), 1.0);
+        assert!((c.x - 0.75).abs() < 1e-12);
+        let c = centre_of_collision(Vec3::ZERO, 2.0, Vec3::new(2.0, 0.0, 0.0), 1.0);
+        // Overlap segment is [1, 2] along x.
+        assert!((c.x - 1.5).abs() < 1e-12);
+        assert_eq!(
+            centre_of_collision(Vec3::ONE, 1.0, Vec3::ONE, 2.0),
+            Vec3::ONE
+        );
+    }
+}

@@ -1,0 +1,142 @@
+//! What a frame reports (paper section 4's per-frame record, DESIGN.md "Frame record").
+
+use serde::Serialize;
+
+use crate::config::MAX_DEPTH;
+use crate::fixation::Fixation;
+
+/// Time spent in each phase of the frame, nanoseconds by the caller's clock (all 0 with a frozen
+/// clock). `collision` = broad + narrow + response is the paper's T.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+pub struct PhaseProfile {
+    /// Integration of positions and orientations.
+    pub integrate_ns: u64,
+    /// Broad phase (sweep and prune, candidate list).
+    pub broad_ns: u64,
+    /// Narrow phase including prioritisation and scheduling.
+    pub narrow_ns: u64,
+    /// Collision response.
+    pub response_ns: u64,
+    /// Metrics and audit (instrumentation, not part of T).
+    pub measure_ns: u64,
+}
+
+impl PhaseProfile {
+    /// T: collision-handling time (broad + narrow + response), as the paper measures it.
+    pub fn collision_ns(&self) -> u64 {
+        self.broad_ns + self.narrow_ns + self.response_ns
+    }
+}
+
+/// The exact answer for the frame's deemed pairs (audit mode).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+pub struct AuditReport {
+    /// Deemed pairs that are not colliding (true false positives).
+    pub false_positives: u32,
+    /// Deemed pairs that do collide.
+    pub true_positives: u32,
+    /// True Δ: sum over false positives of the real separation of the leaf-sphere sets.
+    pub geometric_inaccuracy: f64,
+    /// True P with the measuring model (None without a fixation).
+    pub perceived_inaccuracy: Option<f64>,
+}
+
+/// One frame's record.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct FrameReport {
+    /// Frame number, from 0.
+    pub index: u64,
+    /// Simulated time at the end of the frame (seconds).
+    pub sim_time: f64,
+    /// The fixation used, if any.
+    pub fixation: Option<Fixation>,
+    /// A fixation was handed in but was not usable (non-finite) and was ignored.
+    pub fixation_rejected: bool,
+    /// Geometric inaccuracy Δ: sum of gap estimates over deemed collisions (scene units).
+    pub geometric_inaccuracy: f64,
+    /// Perceived inaccuracy P with the measuring model (None without a fixation).
+    pub perceived_inaccuracy: Option<f64>,
+    /// Candidate pairs from the broad phase.
+    pub candidate_pairs: u32,
+    /// Pairs resolved as colliding by a leaf-leaf overlap.
+    pub real_collisions: u32,
+    /// Pairs deemed colliding at interruption.
+    pub deemed: u32,
+    /// Approaching pairs whose velocities were exchanged.
+    pub responses: u32,
+    /// Pairs resolved (either way) at each level, level 1 first.
+    pub resolved_per_level: [u32; MAX_DEPTH],
+    /// Sphere tests done by the narrow phase.
+    pub sphere_tests: u64,
+    /// The budget ran out before every pair was resolved.
+    pub budget_exhausted: bool,
+    /// Per-phase timings.
+    pub profile: PhaseProfile,
+    /// Exact answer for the deemed pairs, when auditing.
+    pub audit: Option<AuditReport>,
+}
+
+impl FrameReport {
+    /// T in seconds.
+    pub fn collision_time_s(&self) -> f64 {
+        self.profile.collision_ns() as f64 * 1e-9
+    }
+
+    /// Feed every deterministic field (everything but timings) to `h`.
+    pub fn hash_into(&self, h: &mut Fnv1a) {
+        h.u64(self.index);
+        h.f64(self.sim_time);
+        if let Some(f) = self.fixation {
+            h.f64(f.x);
+            h.f64(f.y);
+            h.f64(f.age_s);
+        }
+        h.u64(u64::from(self.fixation_rejected));
+        h.f64(self.geometric_inaccuracy);
+        h.f64(self.perceived_inaccuracy.unwrap_or(-1.0));
+        for v in [
+            self.candidate_pairs,
+            self.real_collisions,
+            self.deemed,
+            self.responses,
+        ] {
+            h.u64(u64::from(v));
+        }
+        for v in self.resolved_per_level {
+            h.u64(u64::from(v));
+        }
+        h.u64(self.sphere_tests);
+        h.u64(u64::from(self.budget_exhausted));
+        if let Some(a) = self.audit {
+            h.u64(u64::from(a.false_positives));
+            h.u64(u64::from(a.true_positives));
+            h.f64(a.geometric_inaccuracy);
+            h.f64(a.perceived_inaccuracy.unwrap_or(-1.0));
+        }
+    }
+}
+
+/// 64-bit FNV-1a, for golden hashes of frame sequences (stable across platforms and versions).
+#[derive(Debug, Clone, Copy)]
+pub struct Fnv1a(pub u64);
+
+impl Default for Fnv1a {
+    fn default() -> Self {
+        Self(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Fnv1a {
+    /// Mix in 8 bytes.
+    pub fn u64(&mut self, v: u64) {
+        for b in v.to_le_bytes() {
+            self.0 ^= u64::from(b);
+            self.0 = self.0.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+
+    /// Mix in the bits of a float.
+    pub fn f64(&mut self, v: f64) {
+        self.u64(v.to_bits());
+    }
+}

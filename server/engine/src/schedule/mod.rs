@@ -1,0 +1,107 @@
+//! Schedulers: the order in which the narrow phase spends its budget (paper sections 2 and 4).
+//!
+//! A scheduler only decides *which pair steps next*; stepping, counting and interruption belong to
+//! [`NarrowPhase`] and [`Meter`]. Adding a scheduler is one file implementing [`Scheduler`] plus a
+//! line in [`for_kind`]. Pairs left open when a scheduler returns are deemed colliding by the caller.
+
+mod expected_gain;
+mod priority_queue;
+mod round_robin;
+mod sequential;
+
+pub use expected_gain::ExpectedGain;
+pub use priority_queue::PriorityQueue;
+pub use round_robin::RoundRobin;
+pub use sequential::Sequential;
+
+use crate::budget::Meter;
+use crate::config::SchedulerKind;
+use crate::fixation::FrameView;
+use crate::narrow_phase::{NarrowPhase, StepOutcome};
+use crate::sphere_tree::SphereTree;
+use crate::world::World;
+
+/// What a scheduler may read while it works.
+#[derive(Debug, Clone, Copy)]
+pub struct Work<'a> {
+    /// The shared sphere tree.
+    pub tree: &'a SphereTree,
+    /// Body state.
+    pub world: &'a World,
+    /// Screen, fixation and scheduling model, when the scheduler needs priorities. Pair priorities
+    /// and inner-queue flags are already filled in when this is `Some`.
+    pub view: Option<&'a FrameView<'a>>,
+}
+
+/// A narrow-phase scheduling strategy.
+pub trait Scheduler: std::fmt::Debug + Send {
+    /// Which strategy this is.
+    fn kind(&self) -> SchedulerKind;
+    /// Step open pairs until none is left or `meter` says stop.
+    fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>);
+}
+
+/// The scheduler for `kind`.
+pub fn for_kind(kind: SchedulerKind) -> Box<dyn Scheduler> {
+    match kind {
+        SchedulerKind::RoundRobin => Box::new(RoundRobin::default()),
+        SchedulerKind::Sequential => Box::new(Sequential::new(false)),
+        SchedulerKind::SortedSequential => Box::new(Sequential::new(true)),
+        SchedulerKind::PriorityOnly => Box::new(PriorityQueue::new(false)),
+        SchedulerKind::PrioritySorted => Box::new(PriorityQueue::new(true)),
+        SchedulerKind::ExpectedGain => Box::new(ExpectedGain::default()),
+    }
+}
+
+/// Round-robin over `queue` (pair indices): each open pair descends one level per round, in queue
+/// order, until the queue is empty or the budget is gone. `queue` is consumed.
+pub(crate) fn round_robin(
+    np: &mut NarrowPhase,
+    queue: &mut Vec<u32>,
+    work: &Work<'_>,
+    meter: &mut Meter<'_>,
+) {
+    while !queue.is_empty() {
+        queue.retain(|&i| {
+            if meter.exhausted(np.tests) {
+                return true;
+            }
+            np.step(i as usize, work.tree, work.world) == StepOutcome::Active
+        });
+        if meter.was_exhausted() {
+            return;
+        }
+    }
+}
+
+/// Resolve the pairs of `queue` one after another, in order.
+pub(crate) fn sequential(
+    np: &mut NarrowPhase,
+    queue: &[u32],
+    work: &Work<'_>,
+    meter: &mut Meter<'_>,
+) {
+    for &i in queue {
+        loop {
+            if meter.exhausted(np.tests) {
+                return;
+            }
+            if np.step(i as usize, work.tree, work.world) != StepOutcome::Active {
+                break;
+            }
+        }
+    }
+}
+
+/// Sort pair indices by priority, highest first; ties keep broad-phase order (deterministic).
+pub(crate) fn sort_by_priority(np: &NarrowPhase, queue: &mut [u32]) {
+    queue.sort_by(|&x, &y| {
+        np.pairs[y as usize]
+            .priority
+            .total_cmp(&np.pairs[x as usize].priority)
+            .then(x.cmp(&y))
+    });
+}
+
+#[cfg(test)]
+mod tests;

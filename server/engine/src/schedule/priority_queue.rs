@@ -1,0 +1,57 @@
+//! Priority-queue scheduling (paper section 4): pairs whose centre of collision lies within an
+//! eccentricity threshold of the fixation form the first queue, the rest the second; the second is
+//! touched only once the first is empty. "Priority only" round-robins inside both queues; "priority
+//! sorted" sorts the first queue and resolves it sequentially, leaving the second round-robin.
+
+use super::{Scheduler, Work, round_robin, sequential, sort_by_priority};
+use crate::budget::Meter;
+use crate::config::SchedulerKind;
+use crate::narrow_phase::NarrowPhase;
+
+/// Two-queue scheduler.
+#[derive(Debug)]
+pub struct PriorityQueue {
+    sorted: bool,
+    inner: Vec<u32>,
+    outer: Vec<u32>,
+}
+
+impl PriorityQueue {
+    /// "Priority only" (`false`) or "priority sorted" (`true`).
+    pub fn new(sorted: bool) -> Self {
+        Self {
+            sorted,
+            inner: Vec::new(),
+            outer: Vec::new(),
+        }
+    }
+}
+
+impl Scheduler for PriorityQueue {
+    fn kind(&self) -> SchedulerKind {
+        if self.sorted {
+            SchedulerKind::PrioritySorted
+        } else {
+            SchedulerKind::PriorityOnly
+        }
+    }
+
+    fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
+        self.inner.clear();
+        self.outer.clear();
+        for (i, p) in np.pairs.iter().enumerate() {
+            if p.inner {
+                self.inner.push(i as u32)
+            } else {
+                self.outer.push(i as u32)
+            }
+        }
+        if self.sorted {
+            sort_by_priority(np, &mut self.inner);
+            sequential(np, &self.inner, work, meter);
+        } else {
+            round_robin(np, &mut self.inner, work, meter);
+        }
+        round_robin(np, &mut self.outer, work, meter);
+    }
+}

@@ -1,0 +1,25 @@
+//! Round-robin scheduling (paper section 2, after Hubbard [14]): every active pair descends one level
+//! per round, so under interruption all pairs end at about the same depth and no perception is used.
+
+use super::{Scheduler, Work, round_robin};
+use crate::budget::Meter;
+use crate::config::SchedulerKind;
+use crate::narrow_phase::NarrowPhase;
+
+/// Round-robin over the whole candidate list.
+#[derive(Debug, Default)]
+pub struct RoundRobin {
+    queue: Vec<u32>,
+}
+
+impl Scheduler for RoundRobin {
+    fn kind(&self) -> SchedulerKind {
+        SchedulerKind::RoundRobin
+    }
+
+    fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
+        self.queue.clear();
+        self.queue.extend(0..np.pairs.len() as u32);
+        round_robin(np, &mut self.queue, work, meter);
+    }
+}

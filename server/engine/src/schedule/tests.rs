@@ -1,0 +1,114 @@
+use crate::config::{BudgetSpec, SchedulerKind, SimConfig};
+use crate::fixation::Fixation;
+use crate::narrow_phase::PairStatus;
+use crate::{FrozenClock, Simulation};
+
+fn sim(kind: SchedulerKind, budget: BudgetSpec, n: u32) -> Simulation {
+    let mut cfg = SimConfig::default();
+    cfg.scene.bodies = n;
+    cfg.scene.seed = 11;
+    cfg.scheduler = kind;
+    cfg.budget = budget;
+    Simulation::new(cfg).expect("valid")
+}
+
+#[test]
+fn every_scheduler_is_exact_without_a_budget() {
+    let mut reference = sim(SchedulerKind::Sequential, BudgetSpec::Exact, 300);
+    reference.step(Some(Fixation::at(0.5, 0.5)), &FrozenClock);
+    let want = reference.exact_colliding_pairs();
+    for kind in SchedulerKind::ALL {
+        let mut s = sim(kind, BudgetSpec::Exact, 300);
+        let r = s.step(Some(Fixation::at(0.5, 0.5)), &FrozenClock).clone();
+        assert_eq!(r.deemed, 0, "{kind:?}");
+        let got: Vec<_> = s
+            .pairs()
+            .iter()
+            .filter(|p| p.status == PairStatus::Colliding)
+            .map(|p| (p.a, p.b))
+            .collect();
+        let mut got_sorted = got.clone();
+        got_sorted.sort_unstable();
+        let mut want_sorted = want.clone();
+        want_sorted.sort_unstable();
+        assert_eq!(got_sorted, want_sorted, "{kind:?}");
+        assert_eq!(r.geometric_inaccuracy, 0.0);
+    }
+}
+
+#[test]
+fn every_scheduler_holds_a_sphere_test_budget_and_deems_the_rest() {
+    for kind in SchedulerKind::ALL {
+        let mut s = sim(kind, BudgetSpec::SphereTests(2000), 500);
+        let r = s.step(Some(Fixation::at(0.3, 0.6)), &FrozenClock).clone();
+        // A step may finish past the limit by at most one step's tests (< 8 * 80 * 80 is a loose cap;
+        // in practice a few hundred).
+        assert!(
+            r.sphere_tests >= 2000 && r.sphere_tests < 2000 + 2000,
+            "{kind:?}: {}",
+            r.sphere_tests
+        );
+        assert!(r.deemed > 0 && r.budget_exhausted, "{kind:?}");
+        let total = r.real_collisions + r.deemed + r.resolved_per_level.iter().sum::<u32>()
+            - s.pairs()
+                .iter()
+                .filter(|p| p.status == PairStatus::Colliding)
+                .count() as u32;
+        assert_eq!(
+            total, r.candidate_pairs,
+            "{kind:?}: every pair is resolved or deemed"
+        );
+        assert!(r.geometric_inaccuracy > 0.0 && r.perceived_inaccuracy.is_some_and(|p| p > 0.0));
+    }
+}
+
+#[test]
+fn interrupt_at_zero_deems_every_pair_and_tests_nothing() {
+    let mut s = sim(SchedulerKind::RoundRobin, BudgetSpec::InterruptAtZero, 300);
+    let r = s.step(None, &FrozenClock).clone();
+    assert_eq!(
+        (r.sphere_tests, r.deemed, r.real_collisions),
+        (0, r.candidate_pairs, 0)
+    );
+    assert!(r.perceived_inaccuracy.is_none(), "no fixation, no P");
+}
+
+#[test]
+fn perceptual_schedulers_resolve_pairs_near_the_fixation_first() {
+    // With a tight budget, deemed pairs under the perceptual schedulers lie further from the
+    // fixation on average than under round-robin.
+    let fix = Fixation::at(0.5, 0.5);
+    let mean_ecc = |kind| {
+        let mut s = sim(kind, BudgetSpec::FractionOfExact(0.3), 500);
+        let mut sum = 0.0;
+        let mut n = 0.0;
+        for _ in 0..10 {
+            s.step(Some(fix), &FrozenClock);
+            let px = s.viewer().to_pixels(0.5, 0.5);
+            for (i, p) in s.pairs().iter().enumerate() {
+                if p.status == PairStatus::Deemed {
+                    let c =
+                        (s.world().position[p.a as usize] + s.world().position[p.b as usize]) * 0.5;
+                    let q = s.viewer().project(c);
+                    sum += (q[0] - px[0]).hypot(q[1] - px[1]);
+                    n += 1.0;
+                    let _ = i;
+                }
+            }
+        }
+        sum / n
+    };
+    let rr = mean_ecc(SchedulerKind::RoundRobin);
+    for kind in [
+        SchedulerKind::SortedSequential,
+        SchedulerKind::PriorityOnly,
+        SchedulerKind::PrioritySorted,
+        SchedulerKind::ExpectedGain,
+    ] {
+        let e = mean_ecc(kind);
+        assert!(
+            e > rr,
+            "{kind:?}: deemed pairs at {e:.1} px vs round-robin {rr:.1} px"
+        );
+    }
+}
