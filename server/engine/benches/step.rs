@@ -1,1 +1,115 @@
-fn main() {}
+//! Speed of the paper scene in exact mode (DESIGN.md "Scene"); figures go to docs/BENCHMARKS.md.
+//!
+//! `cargo bench -p foveal-engine --bench step`
+//! - `frame_exact/10000`: one whole frame (integrate, broad, narrow to completion, response).
+//! - `broad_phase/100000`: one sweep-and-prune update after a step of motion, per frame.
+//! - `narrow_exact/10000`: the exact narrow phase alone over one frame's candidate pairs; the
+//!   throughput line gives sphere tests per second.
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use foveal_engine::broad_phase::BroadPhase;
+use foveal_engine::narrow_phase::NarrowPhase;
+use foveal_engine::shape::Star;
+use foveal_engine::sphere_tree::SphereTree;
+use foveal_engine::world::World;
+use foveal_engine::{
+    BudgetSpec, Clock, FrozenClock, SceneConfig, SchedulerKind, SimConfig, Simulation,
+};
+
+struct Mono(Instant);
+impl Clock for Mono {
+    fn now_ns(&self) -> u64 {
+        self.0.elapsed().as_nanos() as u64
+    }
+}
+
+fn exact(n: u32) -> SimConfig {
+    SimConfig {
+        scene: SceneConfig::paper(n, 1),
+        budget: BudgetSpec::Exact,
+        scheduler: SchedulerKind::Sequential,
+        ..SimConfig::default()
+    }
+}
+
+fn frame(c: &mut Criterion) {
+    let mut g = c.benchmark_group("frame_exact");
+    g.measurement_time(Duration::from_secs(8));
+    for n in [1_000u32, 10_000] {
+        let mut sim = Simulation::new(exact(n)).expect("valid");
+        for _ in 0..10 {
+            sim.step(None, &FrozenClock);
+        }
+        let clock = Mono(Instant::now());
+        g.throughput(Throughput::Elements(u64::from(n)));
+        g.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter(|| black_box(sim.step(None, &clock).sphere_tests))
+        });
+    }
+    g.finish();
+}
+
+fn broad(c: &mut Criterion) {
+    let mut g = c.benchmark_group("broad_phase");
+    g.measurement_time(Duration::from_secs(8));
+    for n in [10_000u32, 100_000] {
+        let cfg = SceneConfig::paper(n, 1);
+        let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
+        let mut world = World::generate(&cfg);
+        let mut bp = BroadPhase::new(tree.root_radius(), world.lo, cfg.volume_side(), world.len());
+        // Two consecutive frames: each iteration repairs one frame's worth of motion (forwards or
+        // backwards), so the measurement is the broad phase alone, without integration.
+        let before = world.position.clone();
+        world.integrate(cfg.dt);
+        let after = world.position.clone();
+        bp.update(&before);
+        let mut flip = false;
+        g.throughput(Throughput::Elements(u64::from(n)));
+        g.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter(|| {
+                flip = !flip;
+                black_box(bp.update(if flip { &after } else { &before }).len())
+            })
+        });
+    }
+    g.finish();
+}
+
+fn narrow(c: &mut Criterion) {
+    let mut g = c.benchmark_group("narrow_exact");
+    g.measurement_time(Duration::from_secs(8));
+    let n = 10_000;
+    let cfg = SceneConfig::paper(n, 1);
+    let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
+    let world = World::generate(&cfg);
+    let mut bp = BroadPhase::new(tree.root_radius(), world.lo, cfg.volume_side(), world.len());
+    let pairs = bp.update(&world.position).to_vec();
+    let mut np = NarrowPhase::default();
+    np.reset(&pairs);
+    for i in 0..pairs.len() {
+        np.resolve_fully(i, &tree, &world);
+    }
+    let tests = np.tests;
+    println!(
+        "narrow_exact/{n}: {} candidate pairs, {tests} sphere tests, {:.1} tests per pair",
+        pairs.len(),
+        tests as f64 / pairs.len() as f64
+    );
+    g.throughput(Throughput::Elements(tests));
+    g.bench_function(BenchmarkId::from_parameter(n), |b| {
+        b.iter(|| {
+            np.reset(&pairs);
+            for i in 0..pairs.len() {
+                np.resolve_fully(i, &tree, &world);
+            }
+            black_box(np.tests)
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, frame, broad, narrow);
+criterion_main!(benches);

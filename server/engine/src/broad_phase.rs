@@ -36,7 +36,10 @@ pub struct BroadPhase {
     columns: Vec<Vec<Entry>>,
     body_column: Vec<u32>,
     moved: Vec<u32>,
+    /// Output buffer; only the first `pair_count` entries are this frame's pairs (the buffer is
+    /// never shrunk, so it is not re-zeroed every frame).
     pairs: Vec<(u32, u32)>,
+    pair_count: usize,
 }
 
 impl BroadPhase {
@@ -56,6 +59,7 @@ impl BroadPhase {
             body_column: vec![u32::MAX; bodies],
             moved: Vec::new(),
             pairs: Vec::new(),
+            pair_count: 0,
         }
     }
 
@@ -63,10 +67,11 @@ impl BroadPhase {
     /// every overlapping pair within one column of each other because clamping is monotone.
     #[inline]
     fn column_of(&self, p: Vec3) -> u32 {
-        let cy = ((p.y - self.grid_lo[0]) * self.inv_cell).floor();
-        let cz = ((p.z - self.grid_lo[1]) * self.inv_cell).floor();
+        let cy = (p.y - self.grid_lo[0]) * self.inv_cell;
+        let cz = (p.z - self.grid_lo[1]) * self.inv_cell;
         let max = (self.n - 1) as f64;
-        // `as usize` of NaN is 0; positions are validated finite by the world.
+        // Truncation of a value clamped to [0, n-1] is its floor, without a libm call; `as usize`
+        // of NaN is 0 (positions are finite anyway).
         let (iy, iz) = (cy.clamp(0.0, max) as usize, cz.clamp(0.0, max) as usize);
         (iz * self.n + iy) as u32
     }
@@ -114,22 +119,25 @@ impl BroadPhase {
             insertion_sort(col);
         }
         self.sweep();
-        &self.pairs
+        self.pairs()
     }
 
     /// Candidate pairs of the last update, each as (smaller id, larger id).
     pub fn pairs(&self) -> &[(u32, u32)] {
-        &self.pairs
+        &self.pairs[..self.pair_count]
     }
 
     fn sweep(&mut self) {
-        self.pairs.clear();
         let n = self.n;
         let reach = self.reach;
+        let mut sink = PairSink {
+            buf: &mut self.pairs,
+            len: 0,
+        };
         for iz in 0..n {
             for iy in 0..n {
                 let a = &self.columns[iz * n + iy];
-                sweep_self(a, reach, &mut self.pairs);
+                sweep_self(a, reach, &mut sink);
                 // Forward neighbours: each unordered column pair is visited once.
                 for (dy, dz) in [(1i64, 0i64), (-1, 1), (0, 1), (1, 1)] {
                     let (jy, jz) = (iy as i64 + dy, iz as i64 + dz);
@@ -137,10 +145,11 @@ impl BroadPhase {
                         continue;
                     }
                     let b = &self.columns[jz as usize * n + jy as usize];
-                    sweep_pair(a, b, reach, &mut self.pairs);
+                    sweep_pair(a, b, reach, &mut sink);
                 }
             }
         }
+        self.pair_count = sink.len;
     }
 
     /// Panic unless every body is in exactly the column its position maps to and every column is
@@ -182,25 +191,37 @@ fn insertion_sort(v: &mut [Entry]) {
     }
 }
 
-#[inline]
-fn push_pair(a: u32, b: u32, out: &mut Vec<(u32, u32)>) {
-    out.push(if a < b { (a, b) } else { (b, a) });
+/// Output buffer that appends without a branch on the (unpredictable) overlap outcome: the pair is
+/// always written and the cursor advanced only on overlap.
+struct PairSink<'a> {
+    buf: &'a mut Vec<(u32, u32)>,
+    len: usize,
 }
 
-fn sweep_self(a: &[Entry], reach: f64, out: &mut Vec<(u32, u32)>) {
+impl PairSink<'_> {
+    #[inline]
+    fn offer(&mut self, p: &Entry, q: &Entry, reach: f64) {
+        if self.len == self.buf.len() {
+            self.buf.resize(self.len * 2 + 64, (0, 0));
+        }
+        let hit = ((q.y - p.y).abs() <= reach) & ((q.z - p.z).abs() <= reach);
+        self.buf[self.len] = (p.id.min(q.id), p.id.max(q.id));
+        self.len += usize::from(hit);
+    }
+}
+
+fn sweep_self(a: &[Entry], reach: f64, out: &mut PairSink<'_>) {
     for (i, p) in a.iter().enumerate() {
         for q in &a[i + 1..] {
             if q.x - p.x > reach {
                 break;
             }
-            if (q.y - p.y).abs() <= reach && (q.z - p.z).abs() <= reach {
-                push_pair(p.id, q.id, out);
-            }
+            out.offer(p, q, reach);
         }
     }
 }
 
-fn sweep_pair(a: &[Entry], b: &[Entry], reach: f64, out: &mut Vec<(u32, u32)>) {
+fn sweep_pair(a: &[Entry], b: &[Entry], reach: f64, out: &mut PairSink<'_>) {
     let mut start = 0;
     for p in a {
         while start < b.len() && b[start].x < p.x - reach {
@@ -210,9 +231,7 @@ fn sweep_pair(a: &[Entry], b: &[Entry], reach: f64, out: &mut Vec<(u32, u32)>) {
             if q.x - p.x > reach {
                 break;
             }
-            if (q.y - p.y).abs() <= reach && (q.z - p.z).abs() <= reach {
-                push_pair(p.id, q.id, out);
-            }
+            out.offer(p, q, reach);
         }
     }
 }

@@ -170,10 +170,11 @@ impl SceneConfig {
 }
 
 /// When the narrow phase stops (paper section 2, "interruptible").
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum BudgetSpec {
     /// Never interrupt: every candidate pair is resolved exactly.
+    #[default]
     Exact,
     /// Interrupt before the first sphere test: every candidate pair is deemed colliding.
     InterruptAtZero,
@@ -184,12 +185,6 @@ pub enum BudgetSpec {
     /// A fraction of the exact narrow phase's cost (sphere tests per frame, calibrated on this scene),
     /// so a study transfers between machines of very different speed.
     FractionOfExact(f64),
-}
-
-impl Default for BudgetSpec {
-    fn default() -> Self {
-        Self::Exact
-    }
 }
 
 impl BudgetSpec {

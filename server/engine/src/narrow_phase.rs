@@ -227,49 +227,58 @@ impl NarrowPhase {
         };
         let at_leaves = new_levels[0] == depth && new_levels[1] == depth;
         let frame = p.frame;
-        let start = self.arena.len();
-        let mut tests = 0u64;
         let (lo, hi) = (p.list_start as usize, (p.list_start + p.list_len) as usize);
-        let mut hit = None;
-        'outer: for k in lo..hi {
+        // Children are written unconditionally and kept by advancing the cursor only on overlap:
+        // overlap outcomes are close to coin flips, and a branch per test would mispredict half
+        // the time. The arena is grown to the worst case (8 children per entry) and cut back after.
+        let start = self.arena.len();
+        self.arena.resize(start + (hi - lo) * 8, [0, 0]);
+        let mut end = start;
+        let mut tests = 0u64;
+        for k in lo..hi {
             let [sa, sb] = self.arena[k];
             if descend_a {
                 let b = tree.sphere(sb as usize);
                 let cb = frame.map(b);
-                for ca in tree.children(sa as usize) {
-                    tests += 1;
-                    if spheres_overlap(tree.sphere(ca), cb, b.w) {
-                        if at_leaves {
-                            hit = Some([ca as u16, sb]);
-                            break 'outer;
-                        }
-                        self.arena.push([ca as u16, sb]);
-                    }
+                let children = tree.children(sa as usize);
+                tests += children.len() as u64;
+                for ca in children {
+                    let hit = spheres_overlap(tree.sphere(ca), cb, b.w);
+                    self.arena[end] = [ca as u16, sb];
+                    end += usize::from(hit);
                 }
             } else {
                 let a = tree.sphere(sa as usize);
-                for cbi in tree.children(sb as usize) {
+                let children = tree.children(sb as usize);
+                tests += children.len() as u64;
+                for cbi in children {
                     let b = tree.sphere(cbi);
-                    tests += 1;
-                    if spheres_overlap(a, frame.map(b), b.w) {
-                        if at_leaves {
-                            hit = Some([sa, cbi as u16]);
-                            break 'outer;
-                        }
-                        self.arena.push([sa, cbi as u16]);
-                    }
+                    let hit = spheres_overlap(a, frame.map(b), b.w);
+                    self.arena[end] = [sa, cbi as u16];
+                    end += usize::from(hit);
                 }
             }
+            // At the leaves one overlap settles the pair: stop after this entry's children.
+            if at_leaves && end > start {
+                break;
+            }
         }
+        self.arena.truncate(end);
+        let hit = if at_leaves && end > start {
+            Some(self.arena[start])
+        } else {
+            None
+        };
         self.tests += tests;
         let st = &mut self.pairs[i];
         st.levels = new_levels;
         let level = new_levels[0].max(new_levels[1]);
         if let Some(last) = hit {
             st.last = last;
+            self.arena.truncate(start);
             return resolve(st, PairStatus::Colliding, level);
         }
-        let found = self.arena.len() - start;
+        let found = end - start;
         if found == 0 {
             return resolve(st, PairStatus::Separate, level);
         }
