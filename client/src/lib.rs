@@ -1,0 +1,3 @@
+//! foveal-client (under construction)
+
+pub mod gaze;
