@@ -28,6 +28,21 @@ impl Fixation {
     pub fn is_usable(&self) -> bool {
         self.x.is_finite() && self.y.is_finite() && self.age_s.is_finite() && self.age_s >= 0.0
     }
+
+    /// Largest |x| or |y| the perceptual computations use: a fixation a thousand screens away is
+    /// already infinitely eccentric for every model, and clamping keeps the visual-angle arithmetic
+    /// away from overflow for any finite input.
+    pub const MAX_OFFSET: f64 = 1e3;
+
+    /// The fixation with coordinates clamped to [-MAX_OFFSET, MAX_OFFSET].
+    pub fn clamped(self) -> Self {
+        let c = |v: f64| v.clamp(-Self::MAX_OFFSET, Self::MAX_OFFSET);
+        Self {
+            x: c(self.x),
+            y: c(self.y),
+            ..self
+        }
+    }
 }
 
 /// Screen, fixation and model for one frame.

@@ -19,6 +19,7 @@
 //! - [`response`]: velocity exchange.
 //! - [`report`]: the frame record, the phase profile and the audit.
 //! - [`simulation`]: one frame of the main loop; [`export`]: a frame as JSON.
+//! - [`soak`]: long-run invariant checks for the stress suite.
 //!
 //! ```
 //! use foveal_engine::{FrozenClock, Fixation, SimConfig, Simulation};
@@ -49,6 +50,7 @@ pub mod rng;
 pub mod schedule;
 pub mod shape;
 pub mod simulation;
+pub mod soak;
 pub mod sphere_tree;
 pub mod world;
 

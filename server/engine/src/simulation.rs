@@ -153,7 +153,10 @@ impl Simulation {
 
         let fixation_rejected = fixation.is_some_and(|f| !f.is_usable());
         let fixation = fixation.filter(Fixation::is_usable);
-        let fixation_px = fixation.map(|f| self.viewer.to_pixels(f.x, f.y));
+        let fixation_px = fixation.map(|f| {
+            let f = f.clamped();
+            self.viewer.to_pixels(f.x, f.y)
+        });
         let schedule_view = fixation_px
             .filter(|_| self.config.scheduler.needs_priority())
             .map(|px| FrameView {

@@ -25,6 +25,9 @@ pub struct World {
     pub lo: Vec3,
     /// Maximum corner of the volume.
     pub hi: Vec3,
+    /// Sum of the velocity changes made by wall reflections since generation (unit masses, so this
+    /// is the momentum the walls put in): momentum minus this is conserved by everything else.
+    pub wall_impulse: Vec3,
 }
 
 impl World {
@@ -45,6 +48,7 @@ impl World {
             basis: Vec::with_capacity(n),
             lo,
             hi,
+            wall_impulse: Vec3::ZERO,
         };
         for _ in 0..n {
             let p = Vec3::new(
@@ -101,6 +105,7 @@ impl World {
                     v[a] = -v[a].abs();
                 }
             }
+            self.wall_impulse += v - self.velocity[i];
             self.position[i] = p;
             self.velocity[i] = v;
             let w = self.spin[i] * dt;

@@ -1,0 +1,171 @@
+//! The exact answer and the audit, checked against brute force on whole simulated frames.
+
+use std::collections::BTreeSet;
+
+use foveal_engine::broad_phase::brute_force_pairs;
+use foveal_engine::narrow_phase::{PairStatus, brute_force_colliding};
+use foveal_engine::{BudgetSpec, Fixation, FrozenClock, SchedulerKind, SimConfig, Simulation};
+
+fn config(n: u32, depth: u32, budget: BudgetSpec, kind: SchedulerKind) -> SimConfig {
+    let mut cfg = SimConfig::default();
+    cfg.scene.bodies = n;
+    cfg.scene.depth = depth;
+    cfg.scene.seed = 77;
+    cfg.budget = budget;
+    cfg.scheduler = kind;
+    cfg.audit = true;
+    cfg
+}
+
+#[test]
+fn exact_frames_equal_brute_force_at_every_depth() {
+    for depth in 1..=6 {
+        let mut sim = Simulation::new(config(
+            150,
+            depth,
+            BudgetSpec::Exact,
+            SchedulerKind::RoundRobin,
+        ))
+        .expect("valid");
+        for _ in 0..5 {
+            sim.step(None, &FrozenClock);
+        }
+        let w = sim.world();
+        let all: BTreeSet<_> = brute_force_pairs(&w.position, sim.tree().root_radius())
+            .into_iter()
+            .collect();
+        let cand: BTreeSet<_> = sim.candidate_pairs().iter().copied().collect();
+        assert_eq!(cand, all, "depth {depth}: broad phase");
+        for p in sim.pairs() {
+            let want = brute_force_colliding(sim.tree(), w, p.a as usize, p.b as usize);
+            assert_eq!(
+                p.status == PairStatus::Colliding,
+                want,
+                "depth {depth}: pair {:?}",
+                (p.a, p.b)
+            );
+        }
+    }
+}
+
+#[test]
+fn audit_counts_true_false_positives_of_deemed_pairs() {
+    let mut sim = Simulation::new(config(
+        400,
+        4,
+        BudgetSpec::SphereTests(3_000),
+        SchedulerKind::PriorityOnly,
+    ))
+    .expect("valid");
+    let mut saw_fp = false;
+    for _ in 0..20 {
+        let r = sim.step(Some(Fixation::at(0.4, 0.6)), &FrozenClock).clone();
+        let a = r.audit.expect("audit on");
+        assert_eq!(a.false_positives + a.true_positives, r.deemed);
+        let w = sim.world();
+        let mut fp = 0;
+        for p in sim
+            .pairs()
+            .iter()
+            .filter(|p| p.status == PairStatus::Deemed)
+        {
+            if !brute_force_colliding(sim.tree(), w, p.a as usize, p.b as usize) {
+                fp += 1;
+            }
+        }
+        assert_eq!(a.false_positives, fp);
+        saw_fp |= fp > 0;
+        // The estimate is an upper bound on the true gap sum: centres of intersecting spheres are
+        // further apart than the true separation of the leaves below them.
+        assert!(
+            a.geometric_inaccuracy <= r.geometric_inaccuracy + 1e-9,
+            "{a:?} vs Δ {}",
+            r.geometric_inaccuracy
+        );
+        assert!(a.perceived_inaccuracy.expect("fixation given") >= 0.0);
+    }
+    assert!(saw_fp);
+}
+
+#[test]
+fn exact_budget_has_no_deemed_pairs_and_zero_error() {
+    let mut sim = Simulation::new(config(
+        300,
+        4,
+        BudgetSpec::Exact,
+        SchedulerKind::PrioritySorted,
+    ))
+    .expect("valid");
+    let r = sim.step(Some(Fixation::at(0.5, 0.5)), &FrozenClock).clone();
+    assert_eq!(
+        (r.deemed, r.geometric_inaccuracy, r.perceived_inaccuracy),
+        (0, 0.0, Some(0.0))
+    );
+    assert_eq!(r.audit.expect("audit").false_positives, 0);
+}
+
+#[test]
+fn fraction_of_exact_budget_is_calibrated_in_sphere_tests() {
+    let sim = Simulation::new(config(
+        300,
+        4,
+        BudgetSpec::FractionOfExact(0.5),
+        SchedulerKind::RoundRobin,
+    ))
+    .expect("valid");
+    let exact = sim.exact_cost(30);
+    match sim.frame_budget() {
+        foveal_engine::FrameBudget::Tests(n) => assert_eq!(n, (0.5 * exact).round() as u64),
+        other => panic!("unexpected budget {other:?}"),
+    }
+}
+
+#[test]
+fn non_finite_fixation_is_never_used() {
+    let mut sim = Simulation::new(config(
+        200,
+        4,
+        BudgetSpec::SphereTests(500),
+        SchedulerKind::SortedSequential,
+    ))
+    .expect("valid");
+    for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let r = sim.step(Some(Fixation::at(bad, 0.5)), &FrozenClock).clone();
+        assert!(r.fixation.is_none() && r.fixation_rejected && r.perceived_inaccuracy.is_none());
+    }
+    // Huge but finite: legal, just very eccentric.
+    let r = sim
+        .step(Some(Fixation::at(1e300, -1e300)), &FrozenClock)
+        .clone();
+    assert!(r.fixation.is_some() && r.perceived_inaccuracy.is_some_and(f64::is_finite));
+}
+
+#[test]
+fn export_has_tree_bodies_and_exact_pairs() {
+    let mut sim = Simulation::new(config(120, 4, BudgetSpec::Exact, SchedulerKind::Sequential))
+        .expect("valid");
+    sim.step(None, &FrozenClock);
+    let v: serde_json::Value = serde_json::from_str(&sim.export_json()).expect("valid JSON");
+    assert_eq!(v["format"], "foveal.scene.v1");
+    assert_eq!(v["spheres_per_level"], serde_json::json!([1, 8, 32, 80]));
+    assert_eq!(v["sphere_tree"].as_array().map(Vec::len), Some(121));
+    assert_eq!(v["sphere_tree"][0]["child_count"], 8);
+    assert_eq!(v["bodies"].as_array().map(Vec::len), Some(120));
+    assert_eq!(
+        v["bodies"][0]["orientation"].as_array().map(Vec::len),
+        Some(4)
+    );
+    let exact: BTreeSet<(u32, u32)> =
+        serde_json::from_value(v["exact_colliding_pairs"].clone()).expect("pairs");
+    let real: BTreeSet<(u32, u32)> = sim
+        .pairs()
+        .iter()
+        .filter(|p| p.status == PairStatus::Colliding)
+        .map(|p| (p.a, p.b))
+        .collect();
+    assert_eq!(exact, real);
+    assert_eq!(
+        v["candidate_pairs"].as_array().map(Vec::len),
+        Some(sim.candidate_pairs().len())
+    );
+}
