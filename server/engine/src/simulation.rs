@@ -6,7 +6,6 @@ use crate::broad_phase::BroadPhase;
 use crate::budget::{Clock, FrameBudget, FrozenClock, Meter};
 use crate::config::{BudgetSpec, ConfigError, SimConfig};
 use crate::fixation::{Fixation, FrameView};
-use crate::math::Vec3;
 use crate::narrow_phase::{NarrowPhase, PairState, PairStatus, separation};
 use crate::perception::{EccentricityUnit, Viewer};
 use crate::report::{AuditReport, FrameReport, PhaseProfile};
@@ -43,19 +42,7 @@ impl Simulation {
         let side = sc.volume_side();
         let broad = BroadPhase::new(tree.root_radius(), world.lo, side, world.len());
         let viewer = Viewer::new(&config.camera, &config.display, world.lo, side);
-        let mut sim = Self {
-            scheduler: schedule::for_kind(config.scheduler),
-            budget: FrameBudget::Unlimited,
-            tree,
-            world,
-            broad,
-            narrow: NarrowPhase::default(),
-            viewer,
-            report: FrameReport::default(),
-            next_index: 0,
-            sim_time: 0.0,
-            config,
-        };
+        let mut sim = Self::from_parts(config, tree, world, broad, viewer);
         sim.budget = match sim.config.budget {
             BudgetSpec::Exact => FrameBudget::Unlimited,
             BudgetSpec::InterruptAtZero => FrameBudget::Tests(0),
@@ -77,23 +64,40 @@ impl Simulation {
         cfg.budget = BudgetSpec::Exact;
         cfg.scheduler = crate::config::SchedulerKind::Sequential;
         cfg.audit = false;
-        let mut copy = Self {
-            config: cfg,
-            tree: self.tree.clone(),
-            world: self.world.clone(),
-            broad: self.broad.clone(),
-            narrow: NarrowPhase::default(),
-            scheduler: schedule::for_kind(crate::config::SchedulerKind::Sequential),
-            viewer: self.viewer,
-            budget: FrameBudget::Unlimited,
-            report: FrameReport::default(),
-            next_index: 0,
-            sim_time: 0.0,
-        };
+        let mut copy = Self::from_parts(
+            cfg,
+            self.tree.clone(),
+            self.world.clone(),
+            self.broad.clone(),
+            self.viewer,
+        );
         let total: u64 = (0..frames.max(1))
             .map(|_| copy.step(None, &FrozenClock).sphere_tests)
             .sum();
         total as f64 / f64::from(frames.max(1))
+    }
+
+    /// A simulation over existing state, at frame 0, with an unlimited budget.
+    fn from_parts(
+        config: SimConfig,
+        tree: SphereTree,
+        world: World,
+        broad: BroadPhase,
+        viewer: Viewer,
+    ) -> Self {
+        Self {
+            scheduler: schedule::for_kind(config.scheduler),
+            budget: FrameBudget::Unlimited,
+            tree,
+            world,
+            broad,
+            narrow: NarrowPhase::default(),
+            viewer,
+            report: FrameReport::default(),
+            next_index: 0,
+            sim_time: 0.0,
+            config,
+        }
     }
 
     /// The configuration in force.
@@ -297,11 +301,6 @@ impl Simulation {
             }
         }
         out
-    }
-
-    /// Centre of the volume (world).
-    pub fn volume_centre(&self) -> Vec3 {
-        (self.world.lo + self.world.hi) * 0.5
     }
 }
 
