@@ -240,21 +240,20 @@ impl NarrowPhase {
             if descend_a {
                 let b = tree.sphere(sb as usize);
                 let cb = frame.map(b);
-                let children = tree.children(sa as usize);
-                tests += children.len() as u64;
-                for ca in children {
-                    let hit = spheres_overlap(tree.sphere(ca), cb, b.w);
-                    self.arena[end] = [ca as u16, sb];
+                let (first, kids) = tree.child_spheres(sa as usize);
+                tests += kids.len() as u64;
+                for (j, s) in kids.iter().enumerate() {
+                    let hit = spheres_overlap(*s, cb, b.w);
+                    self.arena[end] = [(first + j) as u16, sb];
                     end += usize::from(hit);
                 }
             } else {
                 let a = tree.sphere(sa as usize);
-                let children = tree.children(sb as usize);
-                tests += children.len() as u64;
-                for cbi in children {
-                    let b = tree.sphere(cbi);
-                    let hit = spheres_overlap(a, frame.map(b), b.w);
-                    self.arena[end] = [sa, cbi as u16];
+                let (first, kids) = tree.child_spheres(sb as usize);
+                tests += kids.len() as u64;
+                for (j, b) in kids.iter().enumerate() {
+                    let hit = spheres_overlap(a, frame.map(*b), b.w);
+                    self.arena[end] = [sa, (first + j) as u16];
                     end += usize::from(hit);
                 }
             }

@@ -174,6 +174,13 @@ impl SphereTree {
         f..f + self.child_count[i] as usize
     }
 
+    /// Index of the first child of sphere `i` and the children's spheres (empty for leaves).
+    #[inline]
+    pub fn child_spheres(&self, i: usize) -> (usize, &[Vec4]) {
+        let r = self.children(i);
+        (r.start, &self.spheres[r])
+    }
+
     /// Tree depth (number of levels).
     pub fn depth(&self) -> usize {
         self.depth
