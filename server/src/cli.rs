@@ -1,0 +1,290 @@
+//! Command-line flags and environment variables of `foveal-server`.
+//!
+//! Every flag has an environment variable (`FOVEAL_*`) so that a container can be configured
+//! without a command line. Parsing turns them into a [`ServerConfig`], validated with the same
+//! rules and messages as Configure.
+
+use std::net::SocketAddr;
+use std::str::FromStr;
+use std::time::Duration;
+
+use clap::{Parser, ValueEnum};
+use foveal_engine::{
+    BudgetSpec, ConfigError, EccentricityUnit, PerceptualFunction, PerceptualModel, SchedulerKind,
+    SimConfig,
+};
+
+use crate::config::ServerConfig;
+
+/// Headless foveal server: runs the budgeted, gaze-scheduled collision loop and serves it over gRPC.
+#[derive(Debug, Clone, Parser)]
+#[command(name = "foveal-server", version, about)]
+pub struct Cli {
+    /// Address to listen on (use 0.0.0.0:50051 in a container).
+    #[arg(long, env = "FOVEAL_ADDR", default_value = "127.0.0.1:50051")]
+    pub addr: SocketAddr,
+    /// Number of bodies.
+    #[arg(short = 'n', long, env = "FOVEAL_BODIES", default_value_t = 500)]
+    pub bodies: u32,
+    /// Seed of the scene generator.
+    #[arg(long, env = "FOVEAL_SEED", default_value_t = 1)]
+    pub seed: u64,
+    /// Sphere-tree depth (1..=6).
+    #[arg(long, env = "FOVEAL_DEPTH", default_value_t = 4)]
+    pub depth: u32,
+    /// Narrow-phase scheduler.
+    #[arg(long, env = "FOVEAL_SCHEDULER", default_value = "priority-only", value_parser = parse_scheduler)]
+    pub scheduler: SchedulerKind,
+    /// Per-frame narrow-phase budget: `exact`, `zero` (deem every pair), `<ms>ms` (wall clock,
+    /// e.g. `2.5ms`), `<n>tests` (sphere tests, e.g. `20000tests`), or `<f>x` (fraction of the
+    /// exact cost, e.g. `0.3x`).
+    #[arg(long, env = "FOVEAL_BUDGET", default_value = "exact")]
+    pub budget: BudgetArg,
+    /// Frames per second the loop runs at.
+    #[arg(long, env = "FOVEAL_FRAME_RATE", default_value_t = 60.0)]
+    pub frame_rate: f64,
+    /// Eccentricity (degrees) splitting the priority schedulers' two queues.
+    #[arg(long, env = "FOVEAL_ECCENTRICITY_THRESHOLD", default_value_t = 5.0)]
+    pub eccentricity_threshold_deg: f64,
+    /// Model the scheduler ranks pairs with: `f1[:unit]`, `f2:<c>[:unit]` or
+    /// `f3:<c1>,<c2>,<c3>,<e1>,<e2>[:unit]`, unit `deg` (default) or `px`.
+    #[arg(long, env = "FOVEAL_SCHEDULE_MODEL", default_value = "f2:5:deg")]
+    pub schedule_model: ModelArg,
+    /// Model the perceived inaccuracy P is measured with (same syntax as --schedule-model).
+    #[arg(long, env = "FOVEAL_MEASURE_MODEL", default_value = "f2:5:deg")]
+    pub measure_model: ModelArg,
+    /// Compute the exact answer for every deemed pair (true false positives, true Δ and P).
+    #[arg(long, env = "FOVEAL_AUDIT")]
+    pub audit: bool,
+    /// Display width in pixels.
+    #[arg(long, env = "FOVEAL_DISPLAY_WIDTH_PX", default_value_t = 1680)]
+    pub display_width_px: u32,
+    /// Display height in pixels.
+    #[arg(long, env = "FOVEAL_DISPLAY_HEIGHT_PX", default_value_t = 1050)]
+    pub display_height_px: u32,
+    /// Display diagonal in inches.
+    #[arg(long, env = "FOVEAL_DISPLAY_DIAGONAL_IN", default_value_t = 22.0)]
+    pub display_diagonal_in: f64,
+    /// Eye-to-screen distance in centimetres.
+    #[arg(long, env = "FOVEAL_VIEWING_DISTANCE_CM", default_value_t = 70.0)]
+    pub viewing_distance_cm: f64,
+    /// Gaze older than this many seconds no longer steers the scheduler (frames fall back to the
+    /// screen centre and say so).
+    #[arg(
+        long = "gaze-max-age",
+        env = "FOVEAL_GAZE_MAX_AGE",
+        default_value_t = 0.5
+    )]
+    pub gaze_max_age_s: f64,
+    /// Log filter (`info`, `debug`, `foveal_server=debug,info`, ...).
+    #[arg(long, env = "FOVEAL_LOG", default_value = "info")]
+    pub log_level: String,
+    /// Log format.
+    #[arg(long, env = "FOVEAL_LOG_FORMAT", value_enum, default_value_t = LogFormat::Text)]
+    pub log_format: LogFormat,
+}
+
+/// How log lines are written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum LogFormat {
+    /// Human-readable lines.
+    Text,
+    /// One JSON object per line (for log collectors).
+    Json,
+}
+
+fn parse_scheduler(s: &str) -> Result<SchedulerKind, String> {
+    SchedulerKind::from_name(s).ok_or_else(|| {
+        let names: Vec<_> = SchedulerKind::ALL.iter().map(|k| k.name()).collect();
+        format!("unknown scheduler `{s}`; one of: {}", names.join(", "))
+    })
+}
+
+/// A budget flag (see `--budget`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BudgetArg(pub BudgetSpec);
+
+impl FromStr for BudgetArg {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, String> {
+        let s = s.trim();
+        let num = |v: &str| {
+            v.trim()
+                .parse::<f64>()
+                .map_err(|e| format!("budget `{s}`: {e}"))
+        };
+        let spec = if s == "exact" {
+            BudgetSpec::Exact
+        } else if s == "zero" {
+            BudgetSpec::InterruptAtZero
+        } else if let Some(v) = s.strip_suffix("ms") {
+            BudgetSpec::WallMs(num(v)?)
+        } else if let Some(v) = s.strip_suffix("tests") {
+            BudgetSpec::SphereTests(v.trim().parse().map_err(|e| format!("budget `{s}`: {e}"))?)
+        } else if let Some(v) = s.strip_suffix('x') {
+            BudgetSpec::FractionOfExact(num(v)?)
+        } else {
+            return Err(format!(
+                "budget `{s}`: expected `exact`, `zero`, `<ms>ms`, `<n>tests` or `<fraction>x`"
+            ));
+        };
+        spec.validate().map_err(|e| e.to_string())?;
+        Ok(Self(spec))
+    }
+}
+
+/// A perceptual model flag (see `--schedule-model`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModelArg(pub PerceptualModel);
+
+impl FromStr for ModelArg {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, String> {
+        let mut parts = s.trim().split(':');
+        let name = parts.next().unwrap_or_default();
+        let mut rest: Vec<&str> = parts.collect();
+        let unit = match rest.last().copied() {
+            Some("deg") => {
+                rest.pop();
+                EccentricityUnit::Degrees
+            }
+            Some("px") => {
+                rest.pop();
+                EccentricityUnit::Pixels
+            }
+            _ => EccentricityUnit::Degrees,
+        };
+        let consts: Vec<f64> = match rest.as_slice() {
+            [] => Vec::new(),
+            [list] => list
+                .split(',')
+                .map(|v| v.trim().parse::<f64>())
+                .collect::<Result<_, _>>()
+                .map_err(|e| format!("model `{s}`: {e}"))?,
+            _ => return Err(format!("model `{s}`: too many `:` parts")),
+        };
+        let function = match (name, consts.as_slice()) {
+            ("f1", []) => PerceptualFunction::F1,
+            ("f2", &[c]) => PerceptualFunction::F2 { c },
+            ("f3", &[c1, c2, c3, e1, e2]) => PerceptualFunction::F3 { c1, c2, c3, e1, e2 },
+            _ => {
+                return Err(format!(
+                    "model `{s}`: expected `f1[:unit]`, `f2:<c>[:unit]` or `f3:<c1>,<c2>,<c3>,<e1>,<e2>[:unit]` with unit `deg` or `px`"
+                ));
+            }
+        };
+        let model = PerceptualModel { function, unit };
+        model.validate("model").map_err(|e| e.to_string())?;
+        Ok(Self(model))
+    }
+}
+
+impl Cli {
+    /// The server configuration the flags describe, validated.
+    pub fn server_config(&self) -> Result<ServerConfig, ConfigError> {
+        let mut sim = SimConfig::default();
+        sim.scene.bodies = self.bodies;
+        sim.scene.seed = self.seed;
+        sim.scene.depth = self.depth;
+        sim.scheduler = self.scheduler;
+        sim.budget = self.budget.0;
+        sim.eccentricity_threshold_deg = self.eccentricity_threshold_deg;
+        sim.schedule_model = self.schedule_model.0;
+        sim.measure_model = self.measure_model.0;
+        sim.audit = self.audit;
+        sim.display.width_px = self.display_width_px;
+        sim.display.height_px = self.display_height_px;
+        sim.display.diagonal_in = self.display_diagonal_in;
+        sim.display.viewing_distance_cm = self.viewing_distance_cm;
+        let max_age = self.gaze_max_age_s;
+        if !(max_age.is_finite() && max_age > 0.0) {
+            return Err(ConfigError {
+                field: "gaze_max_age",
+                value: max_age.to_string(),
+                expected: "must be finite and > 0 (seconds)".into(),
+            });
+        }
+        let config = ServerConfig {
+            sim,
+            frame_rate_hz: self.frame_rate,
+            gaze_max_age: Duration::from_secs_f64(max_age.min(1e6)),
+            ..ServerConfig::default()
+        };
+        config.validate()?;
+        Ok(config)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_parse_to_a_valid_config() {
+        let cli = Cli::try_parse_from(["foveal-server"]).expect("defaults parse");
+        assert_eq!(cli.addr.to_string(), "127.0.0.1:50051");
+        let c = cli.server_config().expect("valid");
+        assert_eq!(c.sim, SimConfig::default());
+        assert_eq!(c.gaze_max_age, Duration::from_millis(500));
+    }
+
+    #[test]
+    fn flags_parse() {
+        let cli = Cli::try_parse_from([
+            "foveal-server",
+            "--addr=0.0.0.0:9000",
+            "-n",
+            "10000",
+            "--scheduler=round-robin",
+            "--budget=2.5ms",
+            "--measure-model=f1:px",
+            "--schedule-model=f3:1,2,4,20,100:px",
+            "--log-format=json",
+        ])
+        .expect("parse");
+        let c = cli.server_config().expect("valid");
+        assert_eq!(c.sim.scene.bodies, 10_000);
+        assert_eq!(c.sim.scheduler, SchedulerKind::RoundRobin);
+        assert_eq!(c.sim.budget, BudgetSpec::WallMs(2.5));
+        assert_eq!(c.sim.measure_model, PerceptualModel::f1_pixels());
+        assert!(matches!(
+            c.sim.schedule_model.function,
+            PerceptualFunction::F3 { e2, .. } if e2 == 100.0
+        ));
+        assert_eq!(cli.log_format, LogFormat::Json);
+    }
+
+    #[test]
+    fn budgets_and_models_parse_or_explain() {
+        let b = |s: &str| s.parse::<BudgetArg>().map(|b| b.0);
+        assert_eq!(b("exact"), Ok(BudgetSpec::Exact));
+        assert_eq!(b("zero"), Ok(BudgetSpec::InterruptAtZero));
+        assert_eq!(b("20000tests"), Ok(BudgetSpec::SphereTests(20_000)));
+        assert_eq!(b("0.3x"), Ok(BudgetSpec::FractionOfExact(0.3)));
+        assert!(
+            b("1.5x")
+                .expect_err("fraction > 1")
+                .contains("budget.fraction_of_exact")
+        );
+        assert!(b("-1ms").expect_err("negative").contains("budget.wall_ms"));
+        assert!(b("soon").is_err());
+        let m = |s: &str| s.parse::<ModelArg>().map(|m| m.0);
+        assert_eq!(m("f2:5:deg"), Ok(PerceptualModel::default()));
+        assert_eq!(m("f2:5"), Ok(PerceptualModel::default()));
+        assert!(m("f2").is_err());
+        assert!(m("f2:-1").is_err());
+        assert!(m("f3:1,2,3,100,20").is_err(), "breaks out of order");
+        let bad = Cli::try_parse_from(["foveal-server", "--frame-rate=0"]).expect("parses");
+        assert_eq!(
+            bad.server_config().map_err(|e| e.field),
+            Err("frame_rate_hz")
+        );
+        let bad = Cli::try_parse_from(["foveal-server", "--gaze-max-age=nan"]).expect("parses");
+        assert_eq!(
+            bad.server_config().map_err(|e| e.field),
+            Err("gaze_max_age")
+        );
+    }
+}

@@ -1,0 +1,127 @@
+//! The server's configuration: the engine's [`SimConfig`] plus what only the server knows about
+//! (frame rate, how old a gaze sample may be before it stops steering the scheduler, buffer sizes).
+//!
+//! Errors reuse the engine's [`ConfigError`] so that every invalid setting, whether it came from a
+//! flag, the environment or a `Configure` call, is reported the same way: field, value, range.
+
+use std::time::Duration;
+
+use foveal_engine::{ConfigError, SimConfig};
+
+/// Slowest frame rate accepted (frames per second): below this a "frame loop" is a batch job.
+pub const MIN_FRAME_RATE_HZ: f64 = 1.0;
+/// Fastest frame rate accepted (frames per second): beyond this the OS sleep granularity, not the
+/// loop, sets the pace.
+pub const MAX_FRAME_RATE_HZ: f64 = 1000.0;
+/// Longest gaze max age accepted: older gaze than an hour is not gaze.
+pub const MAX_GAZE_MAX_AGE: Duration = Duration::from_secs(3600);
+
+/// Everything [`crate::run`] needs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ServerConfig {
+    /// The simulation the server starts with (Configure can replace it later).
+    pub sim: SimConfig,
+    /// Target frame rate of the loop (frames per second). The loop never runs faster; when a frame
+    /// overruns its period the next one starts at once and the overrun is counted.
+    pub frame_rate_hz: f64,
+    /// Gaze older than this (server clock, from receipt) no longer steers the scheduler: frames
+    /// fall back to the screen centre and say so.
+    pub gaze_max_age: Duration,
+    /// Frames the fan-out keeps for subscribers that fall behind, before they start losing frames.
+    pub frame_buffer: usize,
+    /// How often the loop logs its one-line summary and refreshes the rates in GetStatus.
+    pub summary_interval: Duration,
+    /// How long shutdown waits for open calls to finish before giving up on them.
+    pub shutdown_grace: Duration,
+}
+
+impl Default for ServerConfig {
+    fn default() -> Self {
+        Self {
+            sim: SimConfig::default(),
+            frame_rate_hz: 60.0,
+            gaze_max_age: Duration::from_millis(500),
+            frame_buffer: 32,
+            summary_interval: Duration::from_secs(1),
+            shutdown_grace: Duration::from_secs(5),
+        }
+    }
+}
+
+impl ServerConfig {
+    /// Check every field, the simulation's included; the error names the first offending one.
+    pub fn validate(&self) -> Result<(), ConfigError> {
+        validate_frame_rate(self.frame_rate_hz)?;
+        if self.gaze_max_age.is_zero() || self.gaze_max_age > MAX_GAZE_MAX_AGE {
+            return Err(ConfigError {
+                field: "gaze_max_age",
+                value: format!("{:?}", self.gaze_max_age),
+                expected: format!("must be > 0 and <= {} s", MAX_GAZE_MAX_AGE.as_secs()),
+            });
+        }
+        if !(1..=1 << 16).contains(&self.frame_buffer) {
+            return Err(ConfigError {
+                field: "frame_buffer",
+                value: self.frame_buffer.to_string(),
+                expected: "must be in 1..=65536".into(),
+            });
+        }
+        if self.summary_interval.is_zero() {
+            return Err(ConfigError {
+                field: "summary_interval",
+                value: "0s".into(),
+                expected: "must be > 0".into(),
+            });
+        }
+        self.sim.validate()
+    }
+
+    /// One frame period at the configured rate.
+    pub fn frame_period(&self) -> Duration {
+        frame_period(self.frame_rate_hz)
+    }
+}
+
+/// Check a frame rate (shared by the flags and Configure).
+pub fn validate_frame_rate(hz: f64) -> Result<(), ConfigError> {
+    if hz.is_finite() && (MIN_FRAME_RATE_HZ..=MAX_FRAME_RATE_HZ).contains(&hz) {
+        Ok(())
+    } else {
+        Err(ConfigError {
+            field: "frame_rate_hz",
+            value: hz.to_string(),
+            expected: format!("must be finite and in [{MIN_FRAME_RATE_HZ}, {MAX_FRAME_RATE_HZ}]"),
+        })
+    }
+}
+
+/// The period of a validated frame rate.
+pub(crate) fn frame_period(hz: f64) -> Duration {
+    Duration::from_secs_f64(1.0 / hz.clamp(MIN_FRAME_RATE_HZ, MAX_FRAME_RATE_HZ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_valid_and_errors_name_the_field() {
+        ServerConfig::default()
+            .validate()
+            .expect("defaults are valid");
+        let bad = ServerConfig {
+            frame_rate_hz: f64::NAN,
+            ..ServerConfig::default()
+        };
+        assert_eq!(bad.validate().map_err(|e| e.field), Err("frame_rate_hz"));
+        let bad = ServerConfig {
+            gaze_max_age: Duration::ZERO,
+            ..ServerConfig::default()
+        };
+        assert_eq!(bad.validate().map_err(|e| e.field), Err("gaze_max_age"));
+        let mut bad = ServerConfig::default();
+        bad.sim.scene.bodies = 0;
+        assert_eq!(bad.validate().map_err(|e| e.field), Err("scene.bodies"));
+        assert_eq!(frame_period(50.0), Duration::from_millis(20));
+    }
+}

@@ -1,0 +1,454 @@
+//! Conversions between engine types and protocol messages.
+//!
+//! Configure's merge rule lives here: in a request, unset messages and zero or unspecified scalars
+//! keep the current value (the protocol cannot tell "0" from "not sent" for proto3 scalars), and a
+//! set oneof replaces the whole variant.
+
+use foveal_engine::math::Vec3;
+use foveal_engine::{
+    BudgetSpec, ConfigError, EccentricityUnit, FrameReport, PerceptualFunction, PerceptualModel,
+    SchedulerKind, SimConfig, Simulation,
+};
+use foveal_proto::pb;
+
+use crate::fixation_cell::ResolvedFixation;
+
+fn invalid(field: &'static str, value: impl ToString, expected: impl Into<String>) -> ConfigError {
+    ConfigError {
+        field,
+        value: value.to_string(),
+        expected: expected.into(),
+    }
+}
+
+/// Engine scheduler → protocol enum.
+pub fn scheduler_to_pb(k: SchedulerKind) -> pb::Scheduler {
+    match k {
+        SchedulerKind::RoundRobin => pb::Scheduler::RoundRobin,
+        SchedulerKind::Sequential => pb::Scheduler::Sequential,
+        SchedulerKind::SortedSequential => pb::Scheduler::SortedSequential,
+        SchedulerKind::PriorityOnly => pb::Scheduler::PriorityOnly,
+        SchedulerKind::PrioritySorted => pb::Scheduler::PrioritySorted,
+        SchedulerKind::ExpectedGain => pb::Scheduler::ExpectedGain,
+    }
+}
+
+/// Protocol enum → engine scheduler; `None` for "unspecified" (keep the current one).
+pub fn scheduler_from_pb(raw: i32) -> Result<Option<SchedulerKind>, ConfigError> {
+    let k = pb::Scheduler::try_from(raw)
+        .map_err(|_| invalid("scheduler", raw, "must be a Scheduler enum value (0..=6)"))?;
+    Ok(match k {
+        pb::Scheduler::Unspecified => None,
+        pb::Scheduler::RoundRobin => Some(SchedulerKind::RoundRobin),
+        pb::Scheduler::Sequential => Some(SchedulerKind::Sequential),
+        pb::Scheduler::SortedSequential => Some(SchedulerKind::SortedSequential),
+        pb::Scheduler::PriorityOnly => Some(SchedulerKind::PriorityOnly),
+        pb::Scheduler::PrioritySorted => Some(SchedulerKind::PrioritySorted),
+        pb::Scheduler::ExpectedGain => Some(SchedulerKind::ExpectedGain),
+    })
+}
+
+/// Engine budget → protocol message.
+pub fn budget_to_pb(b: BudgetSpec) -> pb::Budget {
+    use pb::budget::Kind;
+    let kind = match b {
+        BudgetSpec::Exact => Kind::Exact(pb::ExactBudget {}),
+        BudgetSpec::InterruptAtZero => Kind::InterruptAtZero(true),
+        BudgetSpec::WallMs(ms) => Kind::WallMs(ms),
+        BudgetSpec::SphereTests(n) => Kind::SphereTests(n),
+        BudgetSpec::FractionOfExact(f) => Kind::FractionOfExact(f),
+    };
+    pb::Budget { kind: Some(kind) }
+}
+
+/// Protocol budget → engine budget; `None` when no variant is set (keep the current one).
+pub fn budget_from_pb(b: &pb::Budget) -> Result<Option<BudgetSpec>, ConfigError> {
+    use pb::budget::Kind;
+    Ok(match b.kind {
+        None => None,
+        Some(Kind::Exact(_)) => Some(BudgetSpec::Exact),
+        Some(Kind::InterruptAtZero(true)) => Some(BudgetSpec::InterruptAtZero),
+        Some(Kind::InterruptAtZero(false)) => {
+            return Err(invalid(
+                "budget.interrupt_at_zero",
+                false,
+                "must be true to select this budget",
+            ));
+        }
+        Some(Kind::WallMs(ms)) => Some(BudgetSpec::WallMs(ms)),
+        Some(Kind::SphereTests(n)) => Some(BudgetSpec::SphereTests(n)),
+        Some(Kind::FractionOfExact(f)) => Some(BudgetSpec::FractionOfExact(f)),
+    })
+}
+
+fn unit_to_pb(u: EccentricityUnit) -> pb::EccentricityUnit {
+    match u {
+        EccentricityUnit::Pixels => pb::EccentricityUnit::Pixels,
+        EccentricityUnit::Degrees => pb::EccentricityUnit::Degrees,
+    }
+}
+
+/// Engine model → protocol message.
+pub fn model_to_pb(m: PerceptualModel) -> pb::PerceptualModel {
+    use pb::perceptual_model::Model;
+    let model = match m.function {
+        PerceptualFunction::F1 => Model::F1(pb::ModelF1 {}),
+        PerceptualFunction::F2 { c } => Model::F2(pb::ModelF2 { c }),
+        PerceptualFunction::F3 { c1, c2, c3, e1, e2 } => Model::F3(pb::ModelF3 {
+            c1,
+            c2,
+            c3,
+            e1_deg: e1,
+            e2_deg: e2,
+        }),
+    };
+    pb::PerceptualModel {
+        model: Some(model),
+        eccentricity_unit: unit_to_pb(m.unit) as i32,
+    }
+}
+
+/// Merge a protocol model into `current`: a set variant replaces the function, a specified unit
+/// replaces the unit. The F3 breaks are taken in the model's unit, as the engine evaluates them.
+pub fn merge_model(
+    field: &'static str,
+    current: PerceptualModel,
+    m: &pb::PerceptualModel,
+) -> Result<PerceptualModel, ConfigError> {
+    use pb::perceptual_model::Model;
+    let unit = match pb::EccentricityUnit::try_from(m.eccentricity_unit) {
+        Ok(pb::EccentricityUnit::Unspecified) => current.unit,
+        Ok(pb::EccentricityUnit::Pixels) => EccentricityUnit::Pixels,
+        Ok(pb::EccentricityUnit::Degrees) => EccentricityUnit::Degrees,
+        Err(_) => {
+            return Err(invalid(
+                field,
+                format!("eccentricity_unit={}", m.eccentricity_unit),
+                "must be an EccentricityUnit enum value (0..=2)",
+            ));
+        }
+    };
+    let function = match &m.model {
+        None => current.function,
+        Some(Model::F1(_)) => PerceptualFunction::F1,
+        Some(Model::F2(f)) => PerceptualFunction::F2 { c: f.c },
+        Some(Model::F3(f)) => PerceptualFunction::F3 {
+            c1: f.c1,
+            c2: f.c2,
+            c3: f.c3,
+            e1: f.e1_deg,
+            e2: f.e2_deg,
+        },
+    };
+    let merged = PerceptualModel { function, unit };
+    merged.validate(field)?;
+    Ok(merged)
+}
+
+/// The full protocol view of a configuration (every field filled in).
+pub fn scene_config_to_pb(c: &SimConfig, frame_rate_hz: f64) -> pb::SceneConfig {
+    let s = &c.scene;
+    pb::SceneConfig {
+        bodies: s.bodies,
+        seed: s.seed,
+        density: s.density,
+        shape_radius: s.shape_radius,
+        depth: s.depth,
+        dt_s: s.dt,
+        min_speed: s.min_speed,
+        max_speed: s.max_speed,
+        max_spin: s.max_spin,
+        scheduler: scheduler_to_pb(c.scheduler) as i32,
+        eccentricity_threshold_deg: c.eccentricity_threshold_deg,
+        budget: Some(budget_to_pb(c.budget)),
+        schedule_model: Some(model_to_pb(c.schedule_model)),
+        measure_model: Some(model_to_pb(c.measure_model)),
+        audit: c.audit,
+        frame_rate_hz,
+        display: Some(pb::Display {
+            width_px: c.display.width_px,
+            height_px: c.display.height_px,
+            diagonal_in: c.display.diagonal_in,
+            viewing_distance_cm: c.display.viewing_distance_cm,
+        }),
+    }
+}
+
+/// Keep `current` unless the request carries a non-zero value. NaN is "set" (and then refused by
+/// validation), so that a NaN never silently means "keep".
+fn pick_f64(current: f64, requested: f64) -> f64 {
+    if requested == 0.0 { current } else { requested }
+}
+
+fn pick<T: PartialEq + Default>(current: T, requested: T) -> T {
+    if requested == T::default() {
+        current
+    } else {
+        requested
+    }
+}
+
+/// Apply a Configure request to the configuration in force and validate the result. Returns the
+/// merged simulation config and frame rate; the error names the first offending field.
+pub fn merge_scene_config(
+    current: &SimConfig,
+    current_rate_hz: f64,
+    req: &pb::SceneConfig,
+) -> Result<(SimConfig, f64), ConfigError> {
+    let mut c = current.clone();
+    let s = &mut c.scene;
+    s.bodies = pick(s.bodies, req.bodies);
+    s.seed = pick(s.seed, req.seed);
+    s.density = pick_f64(s.density, req.density);
+    s.shape_radius = pick_f64(s.shape_radius, req.shape_radius);
+    s.depth = pick(s.depth, req.depth);
+    s.dt = pick_f64(s.dt, req.dt_s);
+    s.min_speed = pick_f64(s.min_speed, req.min_speed);
+    s.max_speed = pick_f64(s.max_speed, req.max_speed);
+    s.max_spin = pick_f64(s.max_spin, req.max_spin);
+    if let Some(k) = scheduler_from_pb(req.scheduler)? {
+        c.scheduler = k;
+    }
+    c.eccentricity_threshold_deg =
+        pick_f64(c.eccentricity_threshold_deg, req.eccentricity_threshold_deg);
+    if let Some(b) = req
+        .budget
+        .as_ref()
+        .map(budget_from_pb)
+        .transpose()?
+        .flatten()
+    {
+        c.budget = b;
+    }
+    if let Some(m) = &req.schedule_model {
+        c.schedule_model = merge_model("schedule_model", c.schedule_model, m)?;
+    }
+    if let Some(m) = &req.measure_model {
+        c.measure_model = merge_model("measure_model", c.measure_model, m)?;
+    }
+    c.audit = req.audit;
+    if let Some(d) = &req.display {
+        c.display.width_px = pick(c.display.width_px, d.width_px);
+        c.display.height_px = pick(c.display.height_px, d.height_px);
+        c.display.diagonal_in = pick_f64(c.display.diagonal_in, d.diagonal_in);
+        c.display.viewing_distance_cm =
+            pick_f64(c.display.viewing_distance_cm, d.viewing_distance_cm);
+    }
+    let rate = pick_f64(current_rate_hz, req.frame_rate_hz);
+    crate::config::validate_frame_rate(rate)?;
+    c.validate()?;
+    Ok((c, rate))
+}
+
+fn vec3(v: Vec3) -> pb::Vec3 {
+    pb::Vec3 {
+        x: v.x,
+        y: v.y,
+        z: v.z,
+    }
+}
+
+/// Everything static about `sim`'s scene, for GetScene.
+pub fn scene_description(sim: &Simulation, frame_rate_hz: f64) -> pb::SceneDescription {
+    let cfg = sim.config();
+    let world = sim.world();
+    let tree = sim.tree();
+    let viewer = sim.viewer();
+    let spheres = tree
+        .records()
+        .into_iter()
+        .map(|r| pb::Sphere {
+            x: r.center[0] as f32,
+            y: r.center[1] as f32,
+            z: r.center[2] as f32,
+            radius: r.radius as f32,
+            level: r.level,
+            first_child: r.first_child,
+            child_count: r.child_count,
+        })
+        .collect();
+    let spheres_per_level = tree
+        .spheres_per_level()
+        .into_iter()
+        .map(|n| u32::try_from(n).unwrap_or(u32::MAX))
+        .collect();
+    pb::SceneDescription {
+        config: Some(scene_config_to_pb(cfg, frame_rate_hz)),
+        volume_side: cfg.scene.volume_side(),
+        volume_origin: Some(vec3(world.lo)),
+        tree: Some(pb::SphereTree {
+            spheres,
+            spheres_per_level,
+        }),
+        camera: Some(pb::Camera {
+            eye: Some(vec3(viewer.eye)),
+            target: Some(vec3(viewer.target)),
+            fov_y_deg: viewer.fov_y_deg,
+            aspect: f64::from(viewer.display.width_px) / f64::from(viewer.display.height_px),
+        }),
+    }
+}
+
+/// Body poses packed as f32, positions relative to the volume's minimum corner (f32 keeps about
+/// 1e-7 relative precision near the volume however far the scene sits from the world origin).
+pub fn poses(sim: &Simulation) -> pb::Poses {
+    let w = sim.world();
+    let mut positions = Vec::with_capacity(3 * w.position.len());
+    for p in &w.position {
+        let r = *p - w.lo;
+        positions.extend([r.x as f32, r.y as f32, r.z as f32]);
+    }
+    let mut orientations = Vec::with_capacity(4 * w.orientation.len());
+    for q in &w.orientation {
+        orientations.extend([q.x as f32, q.y as f32, q.z as f32, q.w as f32]);
+    }
+    pb::Poses {
+        positions,
+        orientations,
+        origin: Some(vec3(w.lo)),
+    }
+}
+
+/// The protocol fixation of a frame.
+pub fn fixation_to_pb(f: &ResolvedFixation) -> pb::Fixation {
+    pb::Fixation {
+        x: f.fixation.x,
+        y: f.fixation.y,
+        age_s: f.fixation.age_s,
+        source: f.source as i32,
+    }
+}
+
+fn ns_to_s(ns: u64) -> f64 {
+    ns as f64 * 1e-9
+}
+
+/// A frame without poses and with `dropped_before` 0 (both are per subscriber).
+pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &ResolvedFixation) -> pb::Frame {
+    let p = &r.profile;
+    pb::Frame {
+        index,
+        sim_time_s: r.sim_time,
+        fixation: Some(fixation_to_pb(fixation)),
+        metrics: Some(pb::FrameMetrics {
+            collision_time_s: r.collision_time_s(),
+            geometric_inaccuracy: r.geometric_inaccuracy,
+            perceived_inaccuracy: r.perceived_inaccuracy.unwrap_or(0.0),
+            candidate_pairs: u64::from(r.candidate_pairs),
+            real_collisions: u64::from(r.real_collisions),
+            deemed_at_interruption: u64::from(r.deemed),
+            resolved_per_level: r.resolved_per_level.iter().map(|&n| u64::from(n)).collect(),
+            sphere_tests: r.sphere_tests,
+            budget_exhausted: r.budget_exhausted,
+            audit: r.audit.map(|a| pb::AuditMetrics {
+                true_false_positives: u64::from(a.false_positives),
+                true_geometric_inaccuracy: a.geometric_inaccuracy,
+                true_perceived_inaccuracy: a.perceived_inaccuracy.unwrap_or(0.0),
+            }),
+        }),
+        profile: Some(pb::PhaseProfile {
+            integrate_s: ns_to_s(p.integrate_ns),
+            broad_s: ns_to_s(p.broad_ns),
+            narrow_s: ns_to_s(p.narrow_ns),
+            response_s: ns_to_s(p.response_ns),
+        }),
+        dropped_before: 0,
+        poses: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn config_round_trips_and_empty_request_keeps_everything() {
+        let c = SimConfig {
+            budget: BudgetSpec::SphereTests(1234),
+            scheduler: SchedulerKind::RoundRobin,
+            measure_model: PerceptualModel::f1_pixels(),
+            ..SimConfig::default()
+        };
+        let pbc = scene_config_to_pb(&c, 90.0);
+        let (back, rate) = merge_scene_config(&SimConfig::default(), 60.0, &pbc).expect("valid");
+        assert_eq!(back, c);
+        assert_eq!(rate, 90.0);
+        let (same, rate) =
+            merge_scene_config(&c, 90.0, &pb::SceneConfig::default()).expect("valid");
+        assert_eq!(same, c);
+        assert_eq!(rate, 90.0);
+    }
+
+    #[test]
+    fn merge_errors_name_the_field() {
+        let c = SimConfig::default();
+        let field = |req: pb::SceneConfig| merge_scene_config(&c, 60.0, &req).map_err(|e| e.field);
+        assert_eq!(
+            field(pb::SceneConfig {
+                bodies: 3_000_000,
+                ..Default::default()
+            }),
+            Err("scene.bodies")
+        );
+        assert_eq!(
+            field(pb::SceneConfig {
+                density: f64::NAN,
+                ..Default::default()
+            }),
+            Err("scene.density")
+        );
+        assert_eq!(
+            field(pb::SceneConfig {
+                frame_rate_hz: 1e6,
+                ..Default::default()
+            }),
+            Err("frame_rate_hz")
+        );
+        assert_eq!(
+            field(pb::SceneConfig {
+                scheduler: 42,
+                ..Default::default()
+            }),
+            Err("scheduler")
+        );
+        assert_eq!(
+            field(pb::SceneConfig {
+                budget: Some(pb::Budget {
+                    kind: Some(pb::budget::Kind::WallMs(-3.0))
+                }),
+                ..Default::default()
+            }),
+            Err("budget.wall_ms")
+        );
+        assert_eq!(
+            field(pb::SceneConfig {
+                measure_model: Some(pb::PerceptualModel {
+                    model: Some(pb::perceptual_model::Model::F2(pb::ModelF2 { c: -1.0 })),
+                    eccentricity_unit: 0,
+                }),
+                ..Default::default()
+            }),
+            Err("measure_model")
+        );
+    }
+
+    #[test]
+    fn poses_are_relative_to_the_origin() {
+        let mut c = SimConfig::default();
+        c.scene = foveal_engine::SceneConfig {
+            bodies: 20,
+            origin: [100.0, -50.0, 3.0],
+            ..c.scene
+        };
+        let sim = Simulation::new(c).expect("valid");
+        let p = poses(&sim);
+        assert_eq!(p.positions.len(), 60);
+        assert_eq!(p.orientations.len(), 80);
+        let o = p.origin.expect("origin");
+        assert_eq!((o.x, o.y, o.z), (100.0, -50.0, 3.0));
+        let side = sim.config().scene.volume_side() as f32;
+        assert!(p.positions.iter().all(|&v| (0.0..=side).contains(&v)));
+        let d = scene_description(&sim, 60.0);
+        assert_eq!(d.tree.expect("tree").spheres_per_level, vec![1, 8, 32, 80]);
+    }
+}

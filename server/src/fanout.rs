@@ -1,0 +1,210 @@
+//! The fan-out of frames from the loop to WatchFrames subscribers.
+//!
+//! The loop publishes into a bounded broadcast ring and never waits: a subscriber that falls more
+//! than the ring behind loses the oldest frames, and its next frame says how many it lost
+//! (`dropped_before`, computed from frame indices so that frames skipped on purpose by `every_k`
+//! are not counted). Poses are only built while someone wants them, and are shared, not copied,
+//! until the last step where each subscriber's message is encoded.
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU32, Ordering};
+
+use foveal_proto::pb;
+use tokio::sync::{broadcast, mpsc};
+use tokio_stream::wrappers::ReceiverStream;
+
+use crate::shutdown::Shutdown;
+
+/// One published frame.
+#[derive(Debug)]
+pub struct FrameMsg {
+    /// The frame, without poses and with `dropped_before` 0.
+    pub frame: pb::Frame,
+    /// The frame's poses, present while at least one subscriber wants poses.
+    pub poses: Option<Arc<pb::Poses>>,
+}
+
+/// Broadcast ring plus subscriber counts.
+#[derive(Debug)]
+pub struct Fanout {
+    tx: broadcast::Sender<Arc<FrameMsg>>,
+    subscribers: AtomicU32,
+    pose_subscribers: AtomicU32,
+}
+
+impl Fanout {
+    /// A fan-out keeping the last `capacity` frames for slow subscribers.
+    pub fn new(capacity: usize) -> Self {
+        let (tx, _) = broadcast::channel(capacity.max(1));
+        Self {
+            tx,
+            subscribers: AtomicU32::new(0),
+            pose_subscribers: AtomicU32::new(0),
+        }
+    }
+
+    /// Hand a frame to every subscriber; never blocks.
+    pub fn publish(&self, msg: FrameMsg) {
+        // Err only means nobody is subscribed right now.
+        let _ = self.tx.send(Arc::new(msg));
+    }
+
+    /// Current subscribers.
+    pub fn subscribers(&self) -> u32 {
+        self.subscribers.load(Ordering::Relaxed)
+    }
+
+    /// Whether any subscriber wants poses (the loop builds them only then).
+    pub fn wants_poses(&self) -> bool {
+        self.pose_subscribers.load(Ordering::Relaxed) > 0
+    }
+
+    /// A new subscription receiving frames published from now on.
+    pub fn subscribe(self: &Arc<Self>, every_k: u32, include_poses: bool) -> Subscription {
+        self.subscribers.fetch_add(1, Ordering::Relaxed);
+        if include_poses {
+            self.pose_subscribers.fetch_add(1, Ordering::Relaxed);
+        }
+        Subscription {
+            rx: self.tx.subscribe(),
+            every_k: u64::from(every_k.max(1)),
+            include_poses,
+            last_sent: None,
+            fanout: Arc::clone(self),
+        }
+    }
+}
+
+/// One subscriber's view of the fan-out; unsubscribes on drop.
+#[derive(Debug)]
+pub struct Subscription {
+    rx: broadcast::Receiver<Arc<FrameMsg>>,
+    every_k: u64,
+    include_poses: bool,
+    last_sent: Option<u64>,
+    fanout: Arc<Fanout>,
+}
+
+impl Drop for Subscription {
+    fn drop(&mut self) {
+        self.fanout.subscribers.fetch_sub(1, Ordering::Relaxed);
+        if self.include_poses {
+            self.fanout.pose_subscribers.fetch_sub(1, Ordering::Relaxed);
+        }
+    }
+}
+
+impl Subscription {
+    /// The next frame for this subscriber (every k-th, with poses if asked, `dropped_before` set),
+    /// or `None` once the fan-out is gone.
+    pub async fn next(&mut self) -> Option<pb::Frame> {
+        loop {
+            let msg = match self.rx.recv().await {
+                Ok(msg) => msg,
+                // The count is recovered from indices below, which also excludes every_k skips.
+                Err(broadcast::error::RecvError::Lagged(_)) => continue,
+                Err(broadcast::error::RecvError::Closed) => return None,
+            };
+            let index = msg.frame.index;
+            if index % self.every_k != 0 {
+                continue;
+            }
+            // Only the first frame or so after subscribing can lack poses (published before the
+            // loop saw this subscriber); it is skipped rather than sent incomplete.
+            if self.include_poses && msg.poses.is_none() {
+                continue;
+            }
+            let mut frame = msg.frame.clone();
+            frame.dropped_before = self.last_sent.map_or(0, |last| {
+                (index / self.every_k).saturating_sub(last / self.every_k + 1)
+            });
+            if self.include_poses {
+                frame.poses = msg.poses.as_deref().cloned();
+            }
+            self.last_sent = Some(index);
+            return Some(frame);
+        }
+    }
+}
+
+/// Frames queued per subscriber between the fan-out and the connection: small, so that a slow
+/// connection shows up as lag in the broadcast ring (and in `dropped_before`) instead of as
+/// latency hidden in a deep queue.
+const STREAM_QUEUE: usize = 2;
+
+/// Serve a subscription as a WatchFrames response stream. The forwarding task ends when the client
+/// goes away, the fan-out closes, or shutdown is triggered, which ends the stream cleanly.
+pub fn into_stream(
+    mut sub: Subscription,
+    mut shutdown: Shutdown,
+) -> ReceiverStream<Result<pb::Frame, tonic::Status>> {
+    let (tx, rx) = mpsc::channel(STREAM_QUEUE);
+    tokio::spawn(async move {
+        loop {
+            let frame = tokio::select! {
+                _ = shutdown.wait() => break,
+                _ = tx.closed() => break,
+                frame = sub.next() => frame,
+            };
+            let Some(frame) = frame else { break };
+            tokio::select! {
+                _ = shutdown.wait() => break,
+                sent = tx.send(Ok(frame)) => if sent.is_err() { break },
+            }
+        }
+        tracing::debug!("WatchFrames subscriber finished");
+    });
+    ReceiverStream::new(rx)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn msg(index: u64, poses: bool) -> FrameMsg {
+        FrameMsg {
+            frame: pb::Frame {
+                index,
+                ..Default::default()
+            },
+            poses: poses.then(|| Arc::new(pb::Poses::default())),
+        }
+    }
+
+    #[tokio::test]
+    async fn every_k_and_lag_give_exact_dropped_counts() {
+        let fanout = Arc::new(Fanout::new(4));
+        let mut sub = fanout.subscribe(2, false);
+        assert_eq!(fanout.subscribers(), 1);
+        assert!(!fanout.wants_poses());
+        fanout.publish(msg(0, false));
+        fanout.publish(msg(1, false));
+        fanout.publish(msg(2, false));
+        let f = sub.next().await.expect("frame");
+        assert_eq!((f.index, f.dropped_before), (0, 0));
+        let f = sub.next().await.expect("frame");
+        assert_eq!((f.index, f.dropped_before), (2, 0));
+        // Fall behind: 3..=12 published into a ring of 4; 10 and 12 survive, 4, 6, 8 are lost.
+        for i in 3..=12 {
+            fanout.publish(msg(i, false));
+        }
+        let f = sub.next().await.expect("frame");
+        assert_eq!((f.index, f.dropped_before), (10, 3));
+        drop(sub);
+        assert_eq!(fanout.subscribers(), 0);
+    }
+
+    #[tokio::test]
+    async fn pose_subscribers_skip_frames_without_poses() {
+        let fanout = Arc::new(Fanout::new(8));
+        let mut sub = fanout.subscribe(1, true);
+        assert!(fanout.wants_poses());
+        fanout.publish(msg(0, false));
+        fanout.publish(msg(1, true));
+        let f = sub.next().await.expect("frame");
+        assert_eq!(f.index, 1);
+        assert!(f.poses.is_some());
+        drop(sub);
+        assert!(!fanout.wants_poses());
+    }
+}

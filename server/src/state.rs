@@ -1,0 +1,75 @@
+//! State shared between the service handlers and the frame loop.
+
+use std::sync::{Arc, PoisonError, RwLock};
+use std::time::{Duration, Instant};
+
+use foveal_engine::{SimConfig, Simulation};
+use foveal_proto::pb;
+
+use crate::convert;
+use crate::fanout::Fanout;
+use crate::fixation_cell::FixationCell;
+use crate::metrics::Metrics;
+
+/// The scene in force: its configuration and everything GetScene reports. Replaced as a whole
+/// when the loop swaps simulations, so readers always see one consistent scene.
+#[derive(Debug)]
+pub struct Scene {
+    /// Engine configuration.
+    pub sim: SimConfig,
+    /// Frame rate of the loop (frames per second).
+    pub frame_rate_hz: f64,
+    /// GetScene's answer.
+    pub description: pb::SceneDescription,
+}
+
+impl Scene {
+    /// Describe a freshly built simulation.
+    pub fn of(sim: &Simulation, frame_rate_hz: f64) -> Self {
+        Self {
+            sim: sim.config().clone(),
+            frame_rate_hz,
+            description: convert::scene_description(sim, frame_rate_hz),
+        }
+    }
+}
+
+/// Everything the handlers and the loop share.
+#[derive(Debug)]
+pub struct Shared {
+    /// When the server started (uptime).
+    pub started: Instant,
+    /// Gaze older than this falls back to the screen centre.
+    pub gaze_max_age: Duration,
+    /// Latest accepted gaze.
+    pub fixation: FixationCell,
+    /// Counters.
+    pub metrics: Metrics,
+    /// Frames out.
+    pub fanout: Arc<Fanout>,
+    scene: RwLock<Arc<Scene>>,
+}
+
+impl Shared {
+    /// State for a server starting with `scene`.
+    pub fn new(scene: Scene, gaze_max_age: Duration, frame_buffer: usize) -> Self {
+        Self {
+            started: Instant::now(),
+            gaze_max_age,
+            fixation: FixationCell::new(),
+            metrics: Metrics::default(),
+            fanout: Arc::new(Fanout::new(frame_buffer)),
+            scene: RwLock::new(Arc::new(scene)),
+        }
+    }
+
+    /// The scene in force.
+    pub fn scene(&self) -> Arc<Scene> {
+        Arc::clone(&self.scene.read().unwrap_or_else(PoisonError::into_inner))
+    }
+
+    /// Replace the scene (called by the loop at the frame boundary where it swaps simulations).
+    pub fn set_scene(&self, scene: Arc<Scene>) {
+        *self.scene.write().unwrap_or_else(PoisonError::into_inner) = scene;
+    }
+}

@@ -1,0 +1,129 @@
+//! The loop's once-per-interval summary: one log line (fps, T p50/p99, Δ, P, pairs, subscribers,
+//! gaze rate) and the rates GetStatus reports.
+
+use std::time::{Duration, Instant};
+
+use foveal_engine::FrameReport;
+
+use crate::metrics::Metrics;
+
+/// Accumulates one window of frames.
+#[derive(Debug)]
+pub struct Summary {
+    interval: Duration,
+    window_start: Instant,
+    collision_ns: Vec<u64>,
+    step_ns: Vec<u64>,
+    delta_sum: f64,
+    p_sum: f64,
+    pairs_sum: u64,
+    deemed_sum: u64,
+    overruns_at_start: u64,
+    gaze_at_start: u64,
+}
+
+/// The `q`-quantile (0..=1) of sorted values by nearest rank; 0 for none.
+pub fn quantile(sorted: &[u64], q: f64) -> u64 {
+    if sorted.is_empty() {
+        return 0;
+    }
+    let rank = (q.clamp(0.0, 1.0) * (sorted.len() - 1) as f64).round() as usize;
+    sorted[rank.min(sorted.len() - 1)]
+}
+
+fn ms(ns: u64) -> f64 {
+    ns as f64 * 1e-6
+}
+
+impl Summary {
+    /// A window starting at `now`.
+    pub fn new(interval: Duration, now: Instant, metrics: &Metrics) -> Self {
+        Self {
+            interval,
+            window_start: now,
+            collision_ns: Vec::new(),
+            step_ns: Vec::new(),
+            delta_sum: 0.0,
+            p_sum: 0.0,
+            pairs_sum: 0,
+            deemed_sum: 0,
+            overruns_at_start: metrics.overruns(),
+            gaze_at_start: metrics.gaze_accepted(),
+        }
+    }
+
+    /// Add a frame and the wall time its step took.
+    pub fn record(&mut self, r: &FrameReport, step: Duration) {
+        self.collision_ns.push(r.profile.collision_ns());
+        self.step_ns
+            .push(u64::try_from(step.as_nanos()).unwrap_or(u64::MAX));
+        self.delta_sum += r.geometric_inaccuracy;
+        self.p_sum += r.perceived_inaccuracy.unwrap_or(0.0);
+        self.pairs_sum += u64::from(r.candidate_pairs);
+        self.deemed_sum += u64::from(r.deemed);
+    }
+
+    /// If the window is over at `now`, log it, publish its rates and start the next one.
+    pub fn flush_if_due(&mut self, now: Instant, metrics: &Metrics, subscribers: u32) {
+        let elapsed = now.saturating_duration_since(self.window_start);
+        if elapsed < self.interval {
+            return;
+        }
+        let secs = elapsed.as_secs_f64();
+        let frames = self.collision_ns.len();
+        let fps = frames as f64 / secs;
+        let gaze = metrics.gaze_accepted();
+        let gaze_rate = gaze.saturating_sub(self.gaze_at_start) as f64 / secs;
+        metrics.set_rates(fps, gaze_rate);
+        self.collision_ns.sort_unstable();
+        self.step_ns.sort_unstable();
+        let per_frame = |v: f64| if frames == 0 { 0.0 } else { v / frames as f64 };
+        tracing::info!(
+            target: "foveal::summary",
+            fps = format_args!("{fps:.1}"),
+            t_p50_ms = format_args!("{:.3}", ms(quantile(&self.collision_ns, 0.5))),
+            t_p99_ms = format_args!("{:.3}", ms(quantile(&self.collision_ns, 0.99))),
+            step_p99_ms = format_args!("{:.3}", ms(quantile(&self.step_ns, 0.99))),
+            delta = format_args!("{:.4}", per_frame(self.delta_sum)),
+            p = format_args!("{:.4}", per_frame(self.p_sum)),
+            pairs = format_args!("{:.0}", per_frame(self.pairs_sum as f64)),
+            deemed = format_args!("{:.0}", per_frame(self.deemed_sum as f64)),
+            overruns = metrics.overruns().saturating_sub(self.overruns_at_start),
+            subscribers,
+            gaze_hz = format_args!("{gaze_rate:.0}"),
+            "frames"
+        );
+        *self = Self::new(self.interval, now, metrics);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quantiles_by_nearest_rank() {
+        let v: Vec<u64> = (1..=100).collect();
+        assert_eq!(quantile(&v, 0.5), 51);
+        assert_eq!(quantile(&v, 0.99), 99);
+        assert_eq!(quantile(&v, 1.0), 100);
+        assert_eq!(quantile(&[], 0.5), 0);
+    }
+
+    #[test]
+    fn flush_publishes_rates_and_resets() {
+        let m = Metrics::default();
+        let t0 = Instant::now();
+        let mut s = Summary::new(Duration::from_secs(1), t0, &m);
+        for _ in 0..30 {
+            s.record(&FrameReport::default(), Duration::from_millis(1));
+        }
+        m.gaze(120, 0);
+        s.flush_if_due(t0 + Duration::from_millis(500), &m, 0);
+        assert_eq!(m.fps(), 0.0, "not due yet");
+        s.flush_if_due(t0 + Duration::from_secs(1), &m, 3);
+        assert!((m.fps() - 30.0).abs() < 1e-9);
+        assert!((m.gaze_rate_hz() - 120.0).abs() < 1e-9);
+        assert!(s.collision_ns.is_empty());
+    }
+}
