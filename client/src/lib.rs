@@ -1,3 +1,164 @@
-//! foveal-client (under construction)
+//! # foveal-client
+//!
+//! The client side of foveal: it feeds the server gaze (scripted, replayed from a recording, or
+//! bridged live from an eye tracker), watches the frames and metrics that come back, and checks
+//! the server's health. The `foveal` binary is a thin command line over this library; tests and
+//! experiment scripts use the library directly.
+//!
+//! # Layout
+//! - [`connect`], [`endpoint`], [`ClientError`]: one way to reach a server, with a short connect
+//!   timeout so that a missing server fails fast instead of hanging a script.
+//! - [`gaze`]: pure parsers and generators of [`gaze::GazeSample`]s (CSV, EyeLink ASC, Gazepoint
+//!   Open Gaze, scripted gaze).
+//! - [`pacer`]: maps sample timestamps to wall-clock deadlines for real-time or N× replay.
+//! - [`sender`]: [`sender::GazeSender`], one interface over the two gaze rpcs (client streaming
+//!   `StreamGaze`, unary batched `PushGaze`) that returns one [`sender::SendSummary`].
+//! - [`source`]: sample sources as channels: recordings (CSV or ASC, detected), live CSV lines
+//!   from stdin, a Gazepoint tracker over TCP, scripts.
+//! - [`bridge`]: [`bridge::forward`], the one loop from a source through the pacer into a sender
+//!   that keeps going past malformed input and counts what it saw.
+//! - [`watch`]: subscribes to frames, prints a summary line per second, writes frame metrics as CSV.
+//! - [`health`]: the standard gRPC health check.
 
+use std::time::Duration;
+
+use foveal_proto::pb::foveal_client::FovealClient;
+use thiserror::Error;
+use tonic::transport::{Channel, Endpoint};
+
+pub mod bridge;
 pub mod gaze;
+pub mod health;
+pub mod pacer;
+pub mod sender;
+pub mod source;
+pub mod watch;
+
+/// Address the server listens on by default.
+pub const DEFAULT_ADDR: &str = "http://127.0.0.1:50051";
+
+/// How long [`connect`] waits for the TCP (and HTTP/2) connection. Short, because the usual
+/// cause of a slow connect is a server that is not there, and scripts should hear so quickly.
+pub const CONNECT_TIMEOUT: Duration = Duration::from_secs(5);
+
+/// Largest message the client accepts. Frames with poses grow with the body count (28 bytes per
+/// body), so the 4 MiB default of gRPC would cut `watch --poses` off at about 150k bodies.
+pub const MAX_MESSAGE_BYTES: usize = 256 * 1024 * 1024;
+
+/// An error of the client library.
+#[derive(Debug, Error)]
+pub enum ClientError {
+    /// The server address does not parse as a URI.
+    #[error("invalid server address {addr:?}: {source}")]
+    InvalidAddress {
+        /// The address as given.
+        addr: String,
+        /// Why it does not parse.
+        #[source]
+        source: tonic::transport::Error,
+    },
+    /// The connection could not be made.
+    #[error("cannot connect to {addr}: {source}")]
+    Connect {
+        /// The address.
+        addr: String,
+        /// The transport error.
+        #[source]
+        source: tonic::transport::Error,
+    },
+    /// The server answered a call with an error status.
+    #[error("{rpc} failed: {status}")]
+    Rpc {
+        /// The rpc, e.g. `StreamGaze`.
+        rpc: &'static str,
+        /// The status the server (or the transport) gave.
+        status: tonic::Status,
+    },
+    /// Local input or output failed (a recording, the CSV output).
+    #[error("{what}: {source}")]
+    Io {
+        /// What was being done, e.g. `open recording.csv`.
+        what: String,
+        /// The I/O error.
+        #[source]
+        source: std::io::Error,
+    },
+    /// An option has a value that cannot work.
+    #[error("invalid option `{name}`: {reason}")]
+    InvalidOption {
+        /// Option name.
+        name: &'static str,
+        /// What is wrong.
+        reason: String,
+    },
+}
+
+impl ClientError {
+    /// Wraps an I/O error with what was being done.
+    pub(crate) fn io(what: impl Into<String>, source: std::io::Error) -> Self {
+        Self::Io {
+            what: what.into(),
+            source,
+        }
+    }
+}
+
+/// `addr` as a URI to dial: `http://` prepended when it names no scheme, and an unspecified
+/// host (`0.0.0.0`, `[::]`) replaced by loopback. Both let the server's own listen address
+/// (`FOVEAL_ADDR=0.0.0.0:50051` in a container) serve as the client's, as a container health
+/// check does.
+#[must_use]
+pub fn normalise_addr(addr: &str) -> String {
+    let (scheme, rest) = addr.split_once("://").unwrap_or(("http", addr));
+    let rest = if let Some(port) = rest.strip_prefix("0.0.0.0:") {
+        format!("127.0.0.1:{port}")
+    } else if let Some(port) = rest.strip_prefix("[::]:") {
+        format!("[::1]:{port}")
+    } else {
+        rest.to_owned()
+    };
+    format!("{scheme}://{rest}")
+}
+
+/// An endpoint for `addr` (see [`normalise_addr`]) with the given connect timeout.
+///
+/// # Errors
+/// [`ClientError::InvalidAddress`] when the address is not a URI.
+pub fn endpoint(addr: &str, connect_timeout: Duration) -> Result<Endpoint, ClientError> {
+    let addr = normalise_addr(addr);
+    Endpoint::from_shared(addr.clone())
+        .map(|e| e.connect_timeout(connect_timeout).tcp_nodelay(true))
+        .map_err(|source| ClientError::InvalidAddress { addr, source })
+}
+
+/// Connects to the foveal server at `addr` (e.g. `http://127.0.0.1:50051`), waiting at most
+/// [`CONNECT_TIMEOUT`].
+///
+/// # Errors
+/// [`ClientError::InvalidAddress`] or [`ClientError::Connect`].
+pub async fn connect(addr: &str) -> Result<FovealClient<Channel>, ClientError> {
+    let channel = endpoint(addr, CONNECT_TIMEOUT)?
+        .connect()
+        .await
+        .map_err(|source| ClientError::Connect {
+            addr: normalise_addr(addr),
+            source,
+        })?;
+    Ok(FovealClient::new(channel)
+        .max_decoding_message_size(MAX_MESSAGE_BYTES)
+        .max_encoding_message_size(MAX_MESSAGE_BYTES))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn addresses_without_scheme_get_http() {
+        assert_eq!(normalise_addr("127.0.0.1:50051"), "http://127.0.0.1:50051");
+        assert_eq!(normalise_addr("https://x:1"), "https://x:1");
+        assert_eq!(normalise_addr("0.0.0.0:7000"), "http://127.0.0.1:7000");
+        assert_eq!(normalise_addr("http://[::]:7000"), "http://[::1]:7000");
+        assert!(endpoint("http://[::1", CONNECT_TIMEOUT).is_err());
+    }
+}

@@ -1,0 +1,504 @@
+//! `foveal`: the command-line client of a foveal server.
+//!
+//! Parses arguments, sets up logging (stderr) and calls into the `foveal_client` library;
+//! results go to stdout so that they can be piped while logs stay on the terminal.
+
+use std::fs::File;
+use std::io::{self, BufWriter};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Duration;
+
+use anyhow::{Context, Result, bail};
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use foveal_client::bridge::{self, BridgeReport, ForwardOptions, StopReason};
+use foveal_client::gaze::ScreenPx;
+use foveal_client::gaze::opengaze;
+use foveal_client::gaze::script::{GazeScript, ScriptedGaze};
+use foveal_client::health;
+use foveal_client::pacer::Pace;
+use foveal_client::sender::{GazeSender, Transport};
+use foveal_client::source::{self, GazepointOptions, RecordingFormat, SourceItem};
+use foveal_client::watch::{self, WatchOptions};
+use tokio::sync::mpsc;
+use tracing::info;
+use tracing_subscriber::EnvFilter;
+
+/// Client of the foveal collision server: send gaze, bridge eye trackers, watch frames.
+///
+/// Logs go to stderr (filter with RUST_LOG, e.g. RUST_LOG=debug); results go to stdout.
+#[derive(Debug, Parser)]
+#[command(name = "foveal", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Send scripted or recorded gaze, paced in real time, and print the server's summary.
+    Gaze(GazeArgs),
+    /// Forward a live or recorded eye-tracker stream to the server.
+    Bridge(BridgeArgs),
+    /// Watch frames: a summary line per second, optionally every frame as CSV.
+    Watch(WatchArgs),
+    /// Check the server's gRPC health; exit 0 if SERVING, 1 otherwise.
+    Health(HealthArgs),
+}
+
+/// Where the server is.
+#[derive(Debug, Args)]
+struct ServerArgs {
+    /// Server address.
+    #[arg(long, global = true, env = "FOVEAL_ADDR", default_value = foveal_client::DEFAULT_ADDR)]
+    addr: String,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum TransportArg {
+    /// StreamGaze: one client stream (lowest latency).
+    Stream,
+    /// PushGaze: unary batches of --batch samples.
+    Push,
+}
+
+/// How samples travel.
+#[derive(Debug, Args)]
+struct SendArgs {
+    /// Gaze rpc to use.
+    #[arg(long, global = true, value_enum, default_value = "stream")]
+    transport: TransportArg,
+    /// Samples per PushGaze call (with --transport push).
+    #[arg(long, global = true, default_value_t = 32)]
+    batch: usize,
+    /// Stop after this many seconds of tracker time (from the first sample).
+    #[arg(long, global = true)]
+    duration: Option<f64>,
+}
+
+impl SendArgs {
+    fn transport(&self) -> Transport {
+        match self.transport {
+            TransportArg::Stream => Transport::Stream,
+            TransportArg::Push => Transport::Push { batch: self.batch },
+        }
+    }
+}
+
+/// Replay speed of a recording.
+#[derive(Debug, Args)]
+struct SpeedArgs {
+    /// Replay speed: 2 sends a 10 s recording in 5 s.
+    #[arg(long, default_value_t = 1.0, conflicts_with = "as_fast_as_possible")]
+    speed: f64,
+    /// Send without waiting between samples.
+    #[arg(long)]
+    as_fast_as_possible: bool,
+}
+
+impl SpeedArgs {
+    fn pace(&self) -> Result<Pace> {
+        if self.as_fast_as_possible {
+            return Ok(Pace::AsFastAsPossible);
+        }
+        Pace::scaled(self.speed).map_err(anyhow::Error::msg)
+    }
+}
+
+#[derive(Debug, Args)]
+struct GazeArgs {
+    #[command(flatten)]
+    server: ServerArgs,
+    #[command(flatten)]
+    send: SendArgs,
+    /// Samples per second of scripted gaze (a replay keeps its recording's own rate).
+    #[arg(long, global = true, default_value_t = 120.0)]
+    rate: f64,
+    #[command(subcommand)]
+    script: ScriptCommand,
+}
+
+#[derive(Debug, Subcommand)]
+enum ScriptCommand {
+    /// Look at one point.
+    Fixed {
+        /// x, normalised 0..1 from the left edge.
+        #[arg(long, default_value_t = 0.5)]
+        x: f64,
+        /// y, normalised 0..1 from the top edge.
+        #[arg(long, default_value_t = 0.5)]
+        y: f64,
+    },
+    /// Go round a circle (clockwise on screen, starting at its rightmost point).
+    Circle {
+        /// Centre x, normalised.
+        #[arg(long, default_value_t = 0.5)]
+        cx: f64,
+        /// Centre y, normalised.
+        #[arg(long, default_value_t = 0.5)]
+        cy: f64,
+        /// Radius, normalised.
+        #[arg(long, default_value_t = 0.25)]
+        radius: f64,
+        /// Seconds per turn.
+        #[arg(long, default_value_t = 4.0)]
+        period: f64,
+    },
+    /// Random fixations (150-400 ms) joined by saccades.
+    Saccades {
+        /// Seed of the random sequence.
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+    },
+    /// Replay a recording (CSV or EyeLink ASC, detected from the extension or content).
+    Replay {
+        /// The recording.
+        file: PathBuf,
+        #[command(flatten)]
+        speed: SpeedArgs,
+        #[command(flatten)]
+        screen: ScreenArg,
+    },
+}
+
+/// Screen size for pixel gaze.
+#[derive(Debug, Args)]
+struct ScreenArg {
+    /// Screen size for pixel gaze, WIDTHxHEIGHT (wins over a size declared in the input).
+    #[arg(long, value_parser = parse_screen)]
+    screen: Option<ScreenPx>,
+}
+
+fn parse_screen(text: &str) -> Result<ScreenPx, String> {
+    let (w, h) = text
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("{text:?} is not WIDTHxHEIGHT"))?;
+    let number = |s: &str| {
+        s.trim()
+            .parse::<f64>()
+            .map_err(|_| format!("{s:?} is not a number"))
+    };
+    ScreenPx::new(number(w)?, number(h)?).ok_or_else(|| format!("{text:?} is not a valid screen"))
+}
+
+#[derive(Debug, Args)]
+struct BridgeArgs {
+    #[command(flatten)]
+    server: ServerArgs,
+    #[command(flatten)]
+    send: SendArgs,
+    #[command(subcommand)]
+    tracker: TrackerCommand,
+}
+
+#[derive(Debug, Subcommand)]
+enum TrackerCommand {
+    /// CSV gaze lines from a file or, with `-` or nothing, from stdin, forwarded line by line as
+    /// they arrive. Layouts: `t_s,x,y[,validity][,fixation]` (normalised) or `t_s,xpos,ypos`
+    /// (pixels; screen size from --screen or a `# screen WxH px` comment).
+    Csv {
+        /// The file, or `-` for stdin.
+        file: Option<PathBuf>,
+        /// Pace by the timestamps at this speed instead of forwarding lines as they arrive.
+        #[arg(long)]
+        speed: Option<f64>,
+        #[command(flatten)]
+        screen: ScreenArg,
+    },
+    /// An EyeLink ASC file, replayed at its own pace.
+    Asc {
+        /// The file.
+        file: PathBuf,
+        #[command(flatten)]
+        speed: SpeedArgs,
+        #[command(flatten)]
+        screen: ScreenArg,
+    },
+    /// A Gazepoint tracker over the Open Gaze API (TCP).
+    Gazepoint {
+        /// Tracker host.
+        #[arg(long, default_value = "127.0.0.1")]
+        host: String,
+        /// Tracker port.
+        #[arg(long, default_value_t = opengaze::DEFAULT_PORT)]
+        port: u16,
+        /// Reconnection attempts per outage before giving up.
+        #[arg(long, default_value_t = 5)]
+        retries: u32,
+    },
+}
+
+#[derive(Debug, Args)]
+struct WatchArgs {
+    #[command(flatten)]
+    server: ServerArgs,
+    /// Receive every K-th frame.
+    #[arg(long, default_value_t = 1)]
+    every: u32,
+    /// Ask for body poses (the summary then shows the body count).
+    #[arg(long)]
+    poses: bool,
+    /// Write every received frame's metrics to this CSV file (`-` for stdout, which then
+    /// carries no summary lines).
+    #[arg(long)]
+    csv: Option<PathBuf>,
+    /// Exit after this many frames.
+    #[arg(long)]
+    frames: Option<u64>,
+}
+
+#[derive(Debug, Args)]
+struct HealthArgs {
+    #[command(flatten)]
+    server: ServerArgs,
+    /// Service to ask about: "" for the whole server, or foveal.v1.Foveal.
+    #[arg(long, default_value = "")]
+    service: String,
+    /// Connect and call timeout, milliseconds.
+    #[arg(long, default_value_t = 2000)]
+    timeout_ms: u64,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    tracing_subscriber::fmt()
+        .with_env_filter(
+            EnvFilter::try_from_default_env().unwrap_or_else(|_| EnvFilter::new("info")),
+        )
+        .with_writer(io::stderr)
+        .init();
+    let runtime = match tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .build()
+    {
+        Ok(runtime) => runtime,
+        Err(err) => {
+            eprintln!("error: cannot start the async runtime: {err}");
+            return ExitCode::FAILURE;
+        }
+    };
+    match runtime.block_on(run(cli)) {
+        Ok(code) => code,
+        Err(err) => {
+            eprintln!("error: {err:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+async fn run(cli: Cli) -> Result<ExitCode> {
+    match cli.command {
+        Command::Gaze(args) => gaze(args).await,
+        Command::Bridge(args) => bridge(args).await,
+        Command::Watch(args) => watch(args).await,
+        Command::Health(args) => health(args).await,
+    }
+}
+
+/// Completes on Ctrl-C; never, if the signal cannot be listened to.
+async fn ctrl_c() {
+    if let Err(err) = tokio::signal::ctrl_c().await {
+        tracing::warn!("cannot listen for Ctrl-C: {err}");
+        std::future::pending::<()>().await;
+    }
+    info!("interrupted; finishing");
+}
+
+async fn gaze(args: GazeArgs) -> Result<ExitCode> {
+    let (name, source, pace) = match &args.script {
+        ScriptCommand::Replay {
+            file,
+            speed,
+            screen,
+        } => {
+            let (format, rx) = source::recording(file, None, screen.screen)
+                .with_context(|| format!("open {}", file.display()))?;
+            info!(file = %file.display(), ?format, "replaying");
+            (format!("replay:{}", file.display()), rx, speed.pace()?)
+        }
+        ScriptCommand::Fixed { .. }
+        | ScriptCommand::Circle { .. }
+        | ScriptCommand::Saccades { .. } => {
+            let (name, script) = match args.script {
+                ScriptCommand::Fixed { x, y } => ("fixed", GazeScript::Fixed { x, y }),
+                ScriptCommand::Circle {
+                    cx,
+                    cy,
+                    radius,
+                    period,
+                } => (
+                    "circle",
+                    GazeScript::Circle {
+                        cx,
+                        cy,
+                        radius,
+                        period_s: period,
+                    },
+                ),
+                ScriptCommand::Saccades { seed } => ("saccades", GazeScript::Saccades { seed }),
+                ScriptCommand::Replay { .. } => bail!("a replay is not a script"),
+            };
+            let gaze = ScriptedGaze::new(script, args.rate)?;
+            (
+                format!("script:{name}"),
+                source::script(gaze),
+                Pace::REAL_TIME,
+            )
+        }
+    };
+    send(&args.server, &args.send, &name, source, pace).await
+}
+
+async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
+    let (name, source, pace) = match &args.tracker {
+        TrackerCommand::Csv {
+            file,
+            speed,
+            screen,
+        } => {
+            let pace = match speed {
+                Some(speed) => Pace::scaled(*speed).map_err(anyhow::Error::msg)?,
+                None => Pace::AsFastAsPossible,
+            };
+            match file.as_deref() {
+                None => (
+                    "bridge:csv:stdin".to_owned(),
+                    source::stdin_csv(screen.screen),
+                    pace,
+                ),
+                Some(path) if path.as_os_str() == "-" => (
+                    "bridge:csv:stdin".to_owned(),
+                    source::stdin_csv(screen.screen),
+                    pace,
+                ),
+                Some(path) => {
+                    let (_, rx) =
+                        source::recording(path, Some(RecordingFormat::Csv), screen.screen)
+                            .with_context(|| format!("open {}", path.display()))?;
+                    (format!("bridge:csv:{}", path.display()), rx, pace)
+                }
+            }
+        }
+        TrackerCommand::Asc {
+            file,
+            speed,
+            screen,
+        } => {
+            let (_, rx) = source::recording(file, Some(RecordingFormat::Asc), screen.screen)
+                .with_context(|| format!("open {}", file.display()))?;
+            (format!("bridge:asc:{}", file.display()), rx, speed.pace()?)
+        }
+        TrackerCommand::Gazepoint {
+            host,
+            port,
+            retries,
+        } => {
+            let options = GazepointOptions {
+                host: host.clone(),
+                port: *port,
+                max_retries: *retries,
+                ..GazepointOptions::default()
+            };
+            let name = format!("bridge:gazepoint:{host}:{port}");
+            (name, source::gazepoint(options), Pace::AsFastAsPossible)
+        }
+    };
+    send(&args.server, &args.send, &name, source, pace).await
+}
+
+/// Connects, forwards `source` and prints the report; exit 1 if the source failed.
+async fn send(
+    server: &ServerArgs,
+    send: &SendArgs,
+    name: &str,
+    source: mpsc::Receiver<SourceItem>,
+    pace: Pace,
+) -> Result<ExitCode> {
+    if let Some(d) = send.duration
+        && !(d.is_finite() && d >= 0.0)
+    {
+        bail!("--duration must be a finite number of seconds >= 0, not {d}");
+    }
+    let client = foveal_client::connect(&server.addr).await?;
+    let sender = GazeSender::open(client, send.transport(), name)?;
+    let options = ForwardOptions {
+        pace,
+        duration_s: send.duration,
+    };
+    let report: BridgeReport = bridge::forward(source, sender, options, ctrl_c()).await?;
+    println!("{report}");
+    Ok(match report.stopped {
+        StopReason::SourceFailed(_) => ExitCode::FAILURE,
+        _ => ExitCode::SUCCESS,
+    })
+}
+
+async fn watch(args: WatchArgs) -> Result<ExitCode> {
+    let mut client = foveal_client::connect(&args.server.addr).await?;
+    let options = WatchOptions {
+        every_k: args.every,
+        poses: args.poses,
+        frames: args.frames,
+        ..WatchOptions::default()
+    };
+    let report = match args.csv {
+        Some(path) if path.as_os_str() == "-" => {
+            let csv = BufWriter::new(io::stdout());
+            watch::watch(
+                &mut client,
+                options,
+                Some(csv),
+                None::<io::Stdout>,
+                ctrl_c(),
+            )
+            .await?
+        }
+        Some(path) => {
+            let file = File::create(&path).with_context(|| format!("create {}", path.display()))?;
+            let csv = BufWriter::new(file);
+            watch::watch(
+                &mut client,
+                options,
+                Some(csv),
+                Some(io::stdout()),
+                ctrl_c(),
+            )
+            .await?
+        }
+        None => {
+            watch::watch(
+                &mut client,
+                options,
+                None::<File>,
+                Some(io::stdout()),
+                ctrl_c(),
+            )
+            .await?
+        }
+    };
+    info!(
+        frames = report.frames,
+        dropped = report.dropped,
+        "watch ended"
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+async fn health(args: HealthArgs) -> Result<ExitCode> {
+    let timeout = Duration::from_millis(args.timeout_ms);
+    match health::check(&args.server.addr, &args.service, timeout).await {
+        Ok(status) => {
+            println!("{}", status.as_str_name());
+            Ok(if status == health::ServingStatus::Serving {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::FAILURE
+            })
+        }
+        Err(err) => {
+            println!("UNREACHABLE");
+            eprintln!("error: {err}");
+            Ok(ExitCode::FAILURE)
+        }
+    }
+}
