@@ -121,9 +121,19 @@ async fn push_gaze_applies_good_samples_and_refuses_bad_batches_whole() {
         r.rejections[1]
     );
 
+    // A frame already under way when the batch landed still carries the old fixation; the next
+    // one must use the accepted sample.
     let mut frames = watch(&mut client, 1, false).await;
-    let f = next_frame(&mut frames).await;
-    assert_eq!(fixation(&f).source, FixationSource::Gaze as i32);
+    let first = next_frame(&mut frames).await;
+    let f = frame_where(&mut frames, "a frame using the pushed gaze", |f| {
+        fixation(f).source == FixationSource::Gaze as i32
+    })
+    .await;
+    assert!(
+        f.index <= first.index + 1,
+        "gaze used {} frames late",
+        f.index - first.index
+    );
     assert_eq!((fixation(&f).x, fixation(&f).y), (0.6, 0.4));
 
     // A batch whose every sample is bad still answers OK: the caller gets the reasons.
