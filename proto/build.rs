@@ -20,6 +20,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     std::fs::write(out_dir.join("foveal_descriptor.bin"), fds.encode_to_vec())?;
 
     tonic_prost_build::configure()
+        // Pose buffers are `bytes::Bytes`: cloning a frame for each subscriber shares them.
+        .bytes(".foveal.v1.Poses")
         .build_client(true)
         .build_server(true)
         .compile_fds(fds)?;

@@ -70,7 +70,7 @@ pub fn source_name(source: i32) -> &'static str {
 
 /// Bodies in a frame's poses; `None` without poses.
 fn body_count(frame: &pb::Frame) -> Option<usize> {
-    frame.poses.as_ref().map(|p| p.positions.len() / 3)
+    frame.poses.as_ref().map(|p| p.bodies as usize)
 }
 
 /// One CSV row for `frame` (no terminator); `received_at_s` is seconds since watching started.

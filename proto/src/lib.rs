@@ -23,6 +23,51 @@ pub mod pb {
     tonic::include_proto!("foveal.v1");
 }
 
+impl pb::Poses {
+    /// Pack positions (relative to `origin`) and orientations (x, y, z, w) as little-endian f32.
+    pub fn pack(
+        origin: pb::Vec3,
+        positions: impl ExactSizeIterator<Item = [f32; 3]>,
+        orientations: impl Iterator<Item = [f32; 4]>,
+    ) -> Self {
+        let bodies = positions.len();
+        let mut pos = Vec::with_capacity(12 * bodies);
+        for p in positions {
+            p.iter()
+                .for_each(|v| pos.extend_from_slice(&v.to_le_bytes()));
+        }
+        let mut rot = Vec::with_capacity(16 * bodies);
+        for q in orientations {
+            q.iter()
+                .for_each(|v| rot.extend_from_slice(&v.to_le_bytes()));
+        }
+        Self {
+            positions: pos.into(),
+            orientations: rot.into(),
+            origin: Some(origin),
+            bodies: u32::try_from(bodies).unwrap_or(u32::MAX),
+        }
+    }
+
+    /// Positions relative to `origin`, one (x, y, z) per body (a trailing partial triple is ignored).
+    pub fn positions_f32(&self) -> impl Iterator<Item = [f32; 3]> + '_ {
+        self.positions
+            .chunks_exact(12)
+            .map(|c| [f32_at(c, 0), f32_at(c, 4), f32_at(c, 8)])
+    }
+
+    /// Orientations, one unit quaternion (x, y, z, w) per body.
+    pub fn orientations_f32(&self) -> impl Iterator<Item = [f32; 4]> + '_ {
+        self.orientations
+            .chunks_exact(16)
+            .map(|c| [f32_at(c, 0), f32_at(c, 4), f32_at(c, 8), f32_at(c, 12)])
+    }
+}
+
+fn f32_at(c: &[u8], i: usize) -> f32 {
+    f32::from_le_bytes([c[i], c[i + 1], c[i + 2], c[i + 3]])
+}
+
 /// Encoded `google.protobuf.FileDescriptorSet` of `foveal/v1/foveal.proto`, for reflection.
 pub const FILE_DESCRIPTOR_SET: &[u8] =
     include_bytes!(concat!(env!("OUT_DIR"), "/foveal_descriptor.bin"));
@@ -81,7 +126,7 @@ mod tests {
     }
 
     #[test]
-    fn descriptor_set_keeps_comments_and_packed_poses() {
+    fn descriptor_set_keeps_comments_and_byte_packed_poses() {
         let fds = FileDescriptorSet::decode(FILE_DESCRIPTOR_SET).expect("descriptor set decodes");
         let file = fds
             .file
@@ -101,8 +146,9 @@ mod tests {
             .expect("Poses");
         for field in &poses.field {
             if field.name() == "positions" || field.name() == "orientations" {
-                assert!(
-                    field.options.as_ref().is_some_and(|o| o.packed()),
+                assert_eq!(
+                    field.r#type(),
+                    prost_types::field_descriptor_proto::Type::Bytes,
                     "{}",
                     field.name()
                 );
@@ -122,19 +168,27 @@ mod tests {
                 age_s: 0.01,
                 source: pb::FixationSource::Gaze as i32,
             }),
-            poses: Some(pb::Poses {
-                positions: vec![1.0, 2.0, 3.0],
-                orientations: vec![0.0, 0.0, 0.0, 1.0],
-                origin: Some(pb::Vec3 {
+            poses: Some(pb::Poses::pack(
+                pb::Vec3 {
                     x: 10.0,
                     y: 0.0,
                     z: -1.0,
-                }),
-            }),
+                },
+                [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]].into_iter(),
+                [[0.0, 0.0, 0.0, 1.0], [0.5, 0.5, 0.5, 0.5]].into_iter(),
+            )),
             ..Default::default()
         };
         let bytes = frame.encode_to_vec();
-        assert_eq!(pb::Frame::decode(bytes.as_slice()).expect("decodes"), frame);
+        let back = pb::Frame::decode(bytes.as_slice()).expect("decodes");
+        assert_eq!(back, frame);
+        let poses = back.poses.expect("poses");
+        assert_eq!(poses.bodies, 2);
+        assert_eq!(
+            poses.positions_f32().collect::<Vec<_>>(),
+            vec![[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]
+        );
+        assert_eq!(poses.orientations_f32().nth(1), Some([0.5; 4]));
 
         let sample = pb::GazeSample {
             fixation: None,

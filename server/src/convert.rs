@@ -293,20 +293,11 @@ pub fn scene_description(sim: &Simulation, frame_rate_hz: f64) -> pb::SceneDescr
 /// 1e-7 relative precision near the volume however far the scene sits from the world origin).
 pub fn poses(sim: &Simulation) -> pb::Poses {
     let w = sim.world();
-    let mut positions = Vec::with_capacity(3 * w.position.len());
-    for p in &w.position {
-        let r = *p - w.lo;
-        positions.extend([r.x as f32, r.y as f32, r.z as f32]);
-    }
-    let mut orientations = Vec::with_capacity(4 * w.orientation.len());
-    for q in &w.orientation {
-        orientations.extend([q.x as f32, q.y as f32, q.z as f32, q.w as f32]);
-    }
-    pb::Poses {
-        positions,
-        orientations,
-        origin: Some(vec3(w.lo)),
-    }
+    pb::Poses::pack(
+        vec3(w.lo),
+        w.position.iter().map(|p| (*p - w.lo).as_vec3().to_array()),
+        w.orientation.iter().map(|q| q.as_quat().to_array()),
+    )
 }
 
 /// The protocol fixation of a frame.
@@ -442,12 +433,20 @@ mod tests {
         };
         let sim = Simulation::new(c).expect("valid");
         let p = poses(&sim);
-        assert_eq!(p.positions.len(), 60);
-        assert_eq!(p.orientations.len(), 80);
+        assert_eq!(
+            (p.bodies, p.positions.len(), p.orientations.len()),
+            (20, 240, 320)
+        );
         let o = p.origin.expect("origin");
         assert_eq!((o.x, o.y, o.z), (100.0, -50.0, 3.0));
         let side = sim.config().scene.volume_side() as f32;
-        assert!(p.positions.iter().all(|&v| (0.0..=side).contains(&v)));
+        assert!(
+            p.positions_f32()
+                .flatten()
+                .all(|v| (0.0..=side).contains(&v))
+        );
+        let q = sim.world().orientation[3].as_quat().to_array();
+        assert_eq!(p.orientations_f32().nth(3), Some(q));
         let d = scene_description(&sim, 60.0);
         assert_eq!(d.tree.expect("tree").spheres_per_level, vec![1, 8, 32, 80]);
     }

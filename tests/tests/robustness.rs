@@ -91,8 +91,9 @@ async fn thirty_two_subscribers_with_poses_all_receive_frames() {
                 for _ in 0..5 {
                     let f = next_frame(&mut frames).await;
                     let poses = f.poses.expect("poses asked for");
-                    assert_eq!(poses.positions.len(), 3 * BODIES as usize);
-                    assert_eq!(poses.orientations.len(), 4 * BODIES as usize);
+                    assert_eq!(poses.bodies, BODIES);
+                    assert_eq!(poses.positions_f32().count(), BODIES as usize);
+                    assert_eq!(poses.orientations_f32().count(), BODIES as usize);
                     assert!(poses.origin.is_some());
                     if let Some(last) = last {
                         assert!(f.index > last);
