@@ -29,6 +29,8 @@ pub struct Simulation {
     report: FrameReport,
     next_index: u64,
     sim_time: f64,
+    /// Per-body screen positions, reused by prioritisation every frame.
+    screen: Vec<[f64; 2]>,
 }
 
 impl Simulation {
@@ -96,6 +98,7 @@ impl Simulation {
             report: FrameReport::default(),
             next_index: 0,
             sim_time: 0.0,
+            screen: Vec::new(),
             config,
         }
     }
@@ -171,10 +174,10 @@ impl Simulation {
         if let Some(view) = &schedule_view {
             prioritise(
                 &mut self.narrow,
-                &self.tree,
                 &self.world,
                 view,
                 self.config.eccentricity_threshold_deg,
+                &mut self.screen,
             );
         }
         let budget = match self.config.budget {
@@ -306,18 +309,32 @@ impl Simulation {
 
 /// Fill each pair's priority (F of the scheduling model on its current evidence) and its
 /// priority-queue membership (eccentricity in degrees within `threshold_deg`, section 4).
+///
+/// Every pair is still untested here, so its evidence is the two body centres and its centre of
+/// collision their midpoint (equal bounding spheres). Body centres are projected once per body into
+/// `screen`, not once per pair, and the eccentricity in degrees serves both the model and the queue
+/// threshold when the model works in degrees: this runs over every candidate pair inside the budget.
 fn prioritise(
     np: &mut NarrowPhase,
-    tree: &SphereTree,
     world: &World,
     view: &FrameView<'_>,
     threshold_deg: f64,
+    screen: &mut Vec<[f64; 2]>,
 ) {
-    for i in 0..np.pairs.len() {
-        let ev = np.evidence(i, tree, world);
-        let p = &mut np.pairs[i];
-        p.priority = view.weight(&ev) as f32;
-        p.inner =
-            view.eccentricity(ev.centre_of_collision, EccentricityUnit::Degrees) <= threshold_deg;
+    let viewer = view.viewer;
+    screen.clear();
+    screen.extend(world.position.iter().map(|&p| viewer.project(p)));
+    let unit = view.model.unit;
+    for p in &mut np.pairs {
+        let (a, b) = (p.a as usize, p.b as usize);
+        let centre = viewer.project((world.position[a] + world.position[b]) * 0.5);
+        let e_deg = viewer.screen_distance(centre, view.fixation_px, EccentricityUnit::Degrees);
+        let e = match unit {
+            EccentricityUnit::Degrees => e_deg,
+            EccentricityUnit::Pixels => viewer.screen_distance(centre, view.fixation_px, unit),
+        };
+        let g = viewer.screen_distance(screen[a], screen[b], unit);
+        p.priority = view.model.evaluate(g, e) as f32;
+        p.inner = e_deg <= threshold_deg;
     }
 }
