@@ -179,6 +179,7 @@ pub struct NarrowPhase {
     /// Pair states, in broad-phase order.
     pub pairs: Vec<PairState>,
     arena: Vec<[u16; 2]>,
+    spare: Vec<[u16; 2]>,
     /// Sphere tests done this frame.
     pub tests: u64,
 }
@@ -295,6 +296,25 @@ impl NarrowPhase {
                 return o;
             }
         }
+    }
+
+    /// Copy the pending lists of open pairs to a fresh, dense arena when most of the arena is dead
+    /// (lists superseded by later steps). Round-robin scheduling touches every pair once per round,
+    /// so without this each step reads a list written a whole round earlier, far away in memory.
+    pub fn compact_if_sparse(&mut self) {
+        let live: usize = self.pairs.iter().map(|p| p.pending() as usize).sum();
+        if self.arena.len() < 4 * live + 4096 {
+            return;
+        }
+        self.spare.clear();
+        for p in &mut self.pairs {
+            if p.status == PairStatus::Active {
+                let (lo, hi) = (p.list_start as usize, (p.list_start + p.list_len) as usize);
+                p.list_start = self.spare.len() as u32;
+                self.spare.extend_from_slice(&self.arena[lo..hi]);
+            }
+        }
+        std::mem::swap(&mut self.arena, &mut self.spare);
     }
 
     /// Deem every open pair colliding (interruption, section 2). Returns how many were deemed.

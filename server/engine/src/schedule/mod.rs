@@ -71,6 +71,7 @@ pub(crate) fn round_robin(
         if meter.was_exhausted() {
             return;
         }
+        np.compact_if_sparse();
     }
 }
 
