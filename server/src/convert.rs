@@ -98,8 +98,8 @@ pub fn model_to_pb(m: PerceptualModel) -> pb::PerceptualModel {
             c1,
             c2,
             c3,
-            e1_deg: e1,
-            e2_deg: e2,
+            e1: e1,
+            e2: e2,
         }),
     };
     pb::PerceptualModel {
@@ -136,8 +136,8 @@ pub fn merge_model(
             c1: f.c1,
             c2: f.c2,
             c3: f.c3,
-            e1: f.e1_deg,
-            e2: f.e2_deg,
+            e1: f.e1,
+            e2: f.e2,
         },
     };
     let merged = PerceptualModel { function, unit };
