@@ -94,13 +94,9 @@ pub fn model_to_pb(m: PerceptualModel) -> pb::PerceptualModel {
     let model = match m.function {
         PerceptualFunction::F1 => Model::F1(pb::ModelF1 {}),
         PerceptualFunction::F2 { c } => Model::F2(pb::ModelF2 { c }),
-        PerceptualFunction::F3 { c1, c2, c3, e1, e2 } => Model::F3(pb::ModelF3 {
-            c1,
-            c2,
-            c3,
-            e1: e1,
-            e2: e2,
-        }),
+        PerceptualFunction::F3 { c1, c2, c3, e1, e2 } => {
+            Model::F3(pb::ModelF3 { c1, c2, c3, e1, e2 })
+        }
     };
     pb::PerceptualModel {
         model: Some(model),
