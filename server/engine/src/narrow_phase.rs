@@ -173,12 +173,28 @@ pub fn centre_of_collision(ca: Vec3, ra: f64, cb: Vec3, rb: f64) -> Vec3 {
     ca + d * ((len + ra - rb) * 0.5 / len)
 }
 
+/// Temporal coherence for colliding pairs: the leaf pair that proved a collision last frame.
+/// Contact persists over several frames, and one leaf-leaf overlap settles a pair exactly, so a
+/// persisting pair is resolved by one test instead of a descent of a hundred or more.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Witness {
+    partner: u32,
+    leaves: [u16; 2],
+}
+
+const NO_WITNESS: Witness = Witness {
+    partner: u32::MAX,
+    leaves: [NONE, NONE],
+};
+
 /// All candidate pairs of a frame and their traversal states.
 #[derive(Debug, Clone, Default)]
 pub struct NarrowPhase {
     /// Pair states, in broad-phase order.
     pub pairs: Vec<PairState>,
     arena: Vec<[u16; 2]>,
+    /// Per body: a partner it collided with last frame and the leaf pair that proved it.
+    witness: Vec<Witness>,
     spare: Vec<[u16; 2]>,
     /// Sphere tests done this frame.
     pub tests: u64,
@@ -194,7 +210,24 @@ impl NarrowPhase {
         self.tests = 0;
     }
 
-    /// Advance pair `i` by one level of one tree.
+    /// Keep, for each body, one pair it was resolved colliding with this frame and the leaf pair
+    /// that proved it; [`Self::step`] tries that leaf pair first next frame.
+    pub fn remember_witnesses(&mut self, bodies: usize) {
+        self.witness.clear();
+        self.witness.resize(bodies, NO_WITNESS);
+        for p in &self.pairs {
+            if p.status == PairStatus::Colliding {
+                self.witness[p.a as usize] = Witness {
+                    partner: p.b,
+                    leaves: p.last,
+                };
+            }
+        }
+    }
+
+    /// Advance pair `i` by one level of one tree. A pair that collided last frame first re-tests the
+    /// leaf pair that proved it (one test); if that still overlaps, the pair is resolved colliding
+    /// at the leaves, exactly as its full descent would have.
     pub fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
         let depth = tree.depth() as u8;
         let p = self.pairs[i];
@@ -205,6 +238,18 @@ impl NarrowPhase {
             self.tests += 1;
             let st = &mut self.pairs[i];
             st.frame = frame;
+            if let Some(w) = self.witness.get(p.a as usize).filter(|w| w.partner == p.b) {
+                let (la, lb) = (
+                    tree.sphere(w.leaves[0] as usize),
+                    tree.sphere(w.leaves[1] as usize),
+                );
+                self.tests += 1;
+                if spheres_overlap(la, frame.map(lb), lb.w) {
+                    st.last = w.leaves;
+                    st.levels = [depth, depth];
+                    return resolve(st, PairStatus::Colliding, depth);
+                }
+            }
             if !spheres_overlap(root, frame.map(root), root.w) {
                 return resolve(st, PairStatus::Separate, 1);
             }

@@ -194,6 +194,7 @@ impl Simulation {
         };
         self.scheduler.run(&mut self.narrow, &work, &mut meter);
         let deemed = self.narrow.deem_open();
+        self.narrow.remember_witnesses(self.world.len());
         let t3 = clock.now_ns();
         profile.narrow_ns = t3 - t2;
 
