@@ -69,7 +69,13 @@ async fn tight_budget_is_spent_near_the_fixation() {
     let first = configure(&mut client, pb::Scheduler::RoundRobin).await;
     let (p_rr, deemed_rr) = perceived_error(&mut frames, first, FRAMES).await;
     assert!(deemed_rr > 0, "the budget must bind");
-    for scheduler in [pb::Scheduler::PriorityOnly, pb::Scheduler::ExpectedGain] {
+    // Priority-only resolves the inner queue completely and leaves far pairs untested, so its gain
+    // over round-robin is modest at this budget; expected-gain weighs cost too and does far better
+    // (docs/BENCHMARKS.md has the full curves). Both runs are deterministic.
+    for (scheduler, at_most) in [
+        (pb::Scheduler::PriorityOnly, 0.95),
+        (pb::Scheduler::ExpectedGain, 0.6),
+    ] {
         let first = configure(&mut client, scheduler).await;
         let (p, deemed) = perceived_error(&mut frames, first, FRAMES).await;
         println!(
@@ -77,7 +83,7 @@ async fn tight_budget_is_spent_near_the_fixation() {
             scheduler.as_str_name()
         );
         assert!(
-            p < 0.8 * p_rr,
+            p < at_most * p_rr,
             "{}: perceived error {p} not well below round-robin's {p_rr}",
             scheduler.as_str_name()
         );
