@@ -1,0 +1,198 @@
+//! `foveal-bench`: command line of the benchmark suite. Parses arguments and calls the library.
+//!
+//! Subcommands are variants of [`Command`]; adding one (e.g. `stress`) is a new variant with its own
+//! `Args` struct and one arm in [`main`]'s `match`.
+
+use std::path::PathBuf;
+
+use anyhow::{Context, Result, bail};
+use clap::{Args, Parser, Subcommand};
+use foveal_bench::protocol::{CurvesConfig, GazeSpec, StudyConfig};
+use foveal_engine::{PerceptualModel, SchedulerKind};
+
+#[derive(Debug, Parser)]
+#[command(
+    name = "foveal-bench",
+    version,
+    about = "Benchmarks of the foveal engine"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Re-run the time-versus-error study of the paper's section 4 (figures 4-6), extended.
+    Study(StudyArgs),
+}
+
+#[derive(Debug, Args)]
+struct StudyArgs {
+    /// Small protocol (N = paper values, 300 frames, 5 seeds; curves at N = 500, 100 frames).
+    #[arg(long)]
+    quick: bool,
+    /// Run only the budget sweep (true P against budget per scheduler) instead of the table.
+    #[arg(long, conflicts_with = "with_curves")]
+    curves: bool,
+    /// Run the table and then the budget sweep.
+    #[arg(long)]
+    with_curves: bool,
+    /// Body counts of the table, comma separated (paper: 10,30,100,300,500; also 1000,10000,100000).
+    #[arg(long, value_delimiter = ',')]
+    n: Option<Vec<u32>>,
+    /// Frames per table run (paper: 5000).
+    #[arg(long)]
+    frames: Option<u32>,
+    /// Number of seeds (1..=seeds); the 95% CIs are across seeds.
+    #[arg(long)]
+    seeds: Option<u64>,
+    /// Interrupted budgets of the table as fractions of the exact narrow-phase cost.
+    #[arg(long, value_delimiter = ',')]
+    fractions: Option<Vec<f64>>,
+    /// Machine factor: the paper's target times (5, 20, 44, 30, 10 ms) divided by this give the
+    /// wall-clock budgets; 0 disables the wall-clock mode.
+    #[arg(long)]
+    paper_ms_scale: Option<f64>,
+    /// Fixed sphere-test budgets of the table, comma separated.
+    #[arg(long, value_delimiter = ',')]
+    tests: Option<Vec<u64>>,
+    /// Body counts of the budget sweep (default 500,10000).
+    #[arg(long, value_delimiter = ',')]
+    curve_n: Option<Vec<u32>>,
+    /// Frames per budget-sweep run (default 500).
+    #[arg(long)]
+    curve_frames: Option<u32>,
+    /// Budgets of the sweep as fractions of exact cost.
+    #[arg(long, value_delimiter = ',')]
+    curve_fractions: Option<Vec<f64>>,
+    /// Schedulers, comma separated (default: all).
+    #[arg(long, value_delimiter = ',')]
+    schedulers: Option<Vec<String>>,
+    /// Perceptual model to schedule and measure with: f2 (C = 5 degrees, default) or f1 (pixels).
+    #[arg(long, default_value = "f2")]
+    model: String,
+    /// Recorded gaze trace (`t_s,xpos,ypos,ps`, 1920x1080 px) instead of the scripted viewer.
+    #[arg(long)]
+    gaze_csv: Option<PathBuf>,
+    /// Output directory.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Unrecorded warm-up frames before every run and before calibration (default 60).
+    #[arg(long)]
+    warmup: Option<u32>,
+    /// Exact frames (after warm-up) measuring the exact narrow-phase cost (default 60).
+    #[arg(long)]
+    calibration_frames: Option<u32>,
+    /// Worker threads for the budget sweep (deterministic budgets; the table always uses one).
+    #[arg(long)]
+    jobs: Option<usize>,
+    /// Do not write per-frame CSVs.
+    #[arg(long)]
+    no_frames: bool,
+}
+
+impl StudyArgs {
+    fn config(&self) -> Result<StudyConfig> {
+        let mut c = if self.quick {
+            StudyConfig::quick()
+        } else {
+            StudyConfig::default()
+        };
+        if let Some(n) = &self.n {
+            c.ns = n.clone();
+        }
+        if let Some(f) = self.frames {
+            c.frames = f;
+        }
+        if let Some(s) = self.seeds {
+            c.seeds = (1..=s).collect();
+        }
+        if let Some(f) = &self.fractions {
+            c.fractions = f.clone();
+        }
+        if let Some(k) = self.paper_ms_scale {
+            c.paper_ms_scale = (k != 0.0).then_some(k);
+        }
+        if let Some(t) = &self.tests {
+            c.tests_budgets = t.clone();
+        }
+        if self.curves || self.with_curves {
+            c.curves.get_or_insert_with(CurvesConfig::default);
+            c.table = !self.curves;
+        } else if !self.quick {
+            c.curves = None;
+        }
+        if let Some(curves) = c.curves.as_mut() {
+            if let Some(n) = &self.curve_n {
+                curves.ns = n.clone();
+            }
+            if let Some(f) = self.curve_frames {
+                curves.frames = f;
+            }
+            if let Some(f) = &self.curve_fractions {
+                curves.fractions = f.clone();
+            }
+        }
+        if let Some(names) = &self.schedulers {
+            c.schedulers = names
+                .iter()
+                .map(|s| {
+                    SchedulerKind::from_name(s).with_context(|| {
+                        let all: Vec<&str> = SchedulerKind::ALL.iter().map(|k| k.name()).collect();
+                        format!("unknown scheduler {s:?}; known: {}", all.join(", "))
+                    })
+                })
+                .collect::<Result<_>>()?;
+        }
+        c.model = match self.model.as_str() {
+            "f2" => PerceptualModel::default(),
+            "f1" => StudyConfig::f1(),
+            other => bail!("unknown model {other:?}; known: f1, f2"),
+        };
+        if let Some(p) = &self.gaze_csv {
+            c.gaze = GazeSpec::Csv(p.clone());
+        }
+        if let Some(o) = &self.out {
+            c.out = o.clone();
+        }
+        if let Some(w) = self.warmup {
+            c.warmup_frames = w;
+        }
+        if let Some(k) = self.calibration_frames {
+            c.calibration_frames = k.max(1);
+        }
+        if let Some(j) = self.jobs {
+            c.jobs = j.max(1);
+        }
+        c.frame_csv = !self.no_frames;
+        Ok(c)
+    }
+}
+
+fn study(args: &StudyArgs) -> Result<()> {
+    let cfg = args.config()?;
+    let plan = cfg.plan();
+    eprintln!(
+        "foveal-bench study: {} runs, {} frames -> {}",
+        plan.len(),
+        plan.iter().map(|s| u64::from(s.frames)).sum::<u64>(),
+        cfg.out.display()
+    );
+    let out = foveal_bench::run_study(&cfg).context("study failed")?;
+    for f in &out.files {
+        println!("{}", f.display());
+    }
+    if !out.figures_with_text {
+        eprintln!("note: no usable font was found; figures were drawn without text");
+    }
+    eprintln!("done in {:.1} s", out.wall_s);
+    Ok(())
+}
+
+fn main() -> Result<()> {
+    let cli = Cli::parse();
+    match &cli.command {
+        Command::Study(args) => study(args),
+    }
+}

@@ -1,0 +1,353 @@
+//! The study protocol (paper section 4, extended): which scenes, budgets, schedulers and seeds are
+//! run, and for how many frames.
+//!
+//! Two parts:
+//! - **table** (figures 4, 5 and 6 of the paper): for every N and seed, the exact base case, the
+//!   interrupt-at-0 case, and every scheduler at the interrupted budgets (a fraction of the exact
+//!   narrow-phase cost for that N; the paper's own target times scaled to this machine; optional
+//!   fixed sphere-test budgets);
+//! - **curves** (beyond the paper): true perceived inaccuracy against budget, per scheduler, at a few
+//!   N, to see whether the expected-gain scheduler beats the paper's best at equal budget.
+
+use std::path::PathBuf;
+
+use foveal_engine::{
+    BudgetSpec, EccentricityUnit, PerceptualFunction, PerceptualModel, SceneConfig, SchedulerKind,
+    SimConfig,
+};
+
+/// The paper's body counts (section 4).
+pub const PAPER_NS: [u32; 5] = [10, 30, 100, 300, 500];
+/// The paper's target times (ms, 233 MHz Pentium) for [`PAPER_NS`]: "5, 20, 44, 30 and 10
+/// milliseconds respectively" (section 4).
+pub const PAPER_TARGET_MS: [f64; 5] = [5.0, 20.0, 44.0, 30.0, 10.0];
+
+/// The paper's target time for `n` bodies, if the paper ran that N.
+pub fn paper_target_ms(n: u32) -> Option<f64> {
+    PAPER_NS
+        .iter()
+        .position(|&m| m == n)
+        .map(|i| PAPER_TARGET_MS[i])
+}
+
+/// When a run interrupts its narrow phase.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Mode {
+    /// No interruption (the paper's base case).
+    Exact,
+    /// Interrupt before the first sphere test (the paper's "interrupting at 0").
+    Zero,
+    /// Wall-clock target for collision handling, milliseconds (the paper's X).
+    WallMs(f64),
+    /// At most this many sphere tests per frame (deterministic).
+    Tests(u64),
+    /// A fraction of the mean exact narrow-phase cost (sphere tests per frame) measured for this N
+    /// and seed; run as the equivalent deterministic sphere-test budget.
+    Fraction(f64),
+}
+
+impl Mode {
+    /// Short kind: `exact`, `zero`, `ms`, `tests`, `fraction`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Self::Exact => "exact",
+            Self::Zero => "zero",
+            Self::WallMs(_) => "ms",
+            Self::Tests(_) => "tests",
+            Self::Fraction(_) => "fraction",
+        }
+    }
+
+    /// The mode's parameter (0 for exact and zero).
+    pub fn param(&self) -> f64 {
+        match *self {
+            Self::Exact | Self::Zero => 0.0,
+            Self::WallMs(ms) => ms,
+            Self::Tests(t) => t as f64,
+            Self::Fraction(f) => f,
+        }
+    }
+
+    /// Label used in file names and tables, e.g. `fraction=0.1`.
+    pub fn label(&self) -> String {
+        match self {
+            Self::Exact | Self::Zero => self.kind().into(),
+            _ => format!("{}={}", self.kind(), self.param()),
+        }
+    }
+
+    /// The engine budget, given the measured exact cost (sphere tests per frame).
+    pub fn budget(&self, exact_cost: f64) -> BudgetSpec {
+        match *self {
+            Self::Exact => BudgetSpec::Exact,
+            Self::Zero => BudgetSpec::InterruptAtZero,
+            Self::WallMs(ms) => BudgetSpec::WallMs(ms),
+            Self::Tests(t) => BudgetSpec::SphereTests(t),
+            Self::Fraction(f) => BudgetSpec::SphereTests((f * exact_cost).round() as u64),
+        }
+    }
+
+    /// Whether the budget is wall-clock (results then depend on the machine and its load).
+    pub fn is_wall_clock(&self) -> bool {
+        matches!(self, Self::WallMs(_))
+    }
+}
+
+/// Which part of the study a run belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Part {
+    /// Figures 4-6 of the paper.
+    Table,
+    /// Budget sweep (ours).
+    Curves,
+}
+
+impl Part {
+    /// `table` or `curves`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Table => "table",
+            Self::Curves => "curves",
+        }
+    }
+}
+
+/// One run: a scene, a budget, a scheduler, a seed, a number of frames.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunSpec {
+    /// Part of the study.
+    pub part: Part,
+    /// Bodies.
+    pub n: u32,
+    /// Scene and gaze seed.
+    pub seed: u64,
+    /// Budget.
+    pub mode: Mode,
+    /// Scheduler.
+    pub scheduler: SchedulerKind,
+    /// Frames.
+    pub frames: u32,
+}
+
+impl RunSpec {
+    /// File-name stem of the run's per-frame CSV.
+    pub fn stem(&self) -> String {
+        format!(
+            "{}_n{}_s{}_{}_{}",
+            self.part.name(),
+            self.n,
+            self.seed,
+            self.mode.label().replace('=', "-"),
+            self.scheduler.name()
+        )
+    }
+}
+
+/// Where gaze comes from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum GazeSpec {
+    /// The seeded fixation/saccade script (seed = run seed).
+    Scripted,
+    /// A recorded `t_s,xpos,ypos,ps` CSV (1920x1080 px), replayed in a loop.
+    Csv(PathBuf),
+}
+
+/// The budget sweep (ours).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurvesConfig {
+    /// Body counts.
+    pub ns: Vec<u32>,
+    /// Frames per run.
+    pub frames: u32,
+    /// Budgets as fractions of the exact narrow-phase cost.
+    pub fractions: Vec<f64>,
+}
+
+impl Default for CurvesConfig {
+    fn default() -> Self {
+        Self {
+            ns: vec![500, 10_000],
+            frames: 500,
+            fractions: vec![0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5],
+        }
+    }
+}
+
+/// Everything a study run needs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StudyConfig {
+    /// Run the table part (figures 4-6).
+    pub table: bool,
+    /// Body counts of the table part.
+    pub ns: Vec<u32>,
+    /// Frames per table run (paper: 5,000).
+    pub frames: u32,
+    /// Seeds (scene and gaze); the CI is across them.
+    pub seeds: Vec<u64>,
+    /// Schedulers run at every interrupted budget.
+    pub schedulers: Vec<SchedulerKind>,
+    /// Interrupted budgets of the table as fractions of exact cost.
+    pub fractions: Vec<f64>,
+    /// Divide the paper's target times by this machine factor for a wall-clock mode (None: skip).
+    pub paper_ms_scale: Option<f64>,
+    /// Fixed sphere-test budgets of the table.
+    pub tests_budgets: Vec<u64>,
+    /// The budget sweep, if requested.
+    pub curves: Option<CurvesConfig>,
+    /// Gaze source.
+    pub gaze: GazeSpec,
+    /// Perceptual model used both to schedule and to measure (paper figure 6(b): F2).
+    pub model: PerceptualModel,
+    /// Priority-queue eccentricity threshold (degrees).
+    pub threshold_deg: f64,
+    /// Frames of exact narrow phase used to measure the exact cost per (N, seed), after warm-up.
+    pub calibration_frames: u32,
+    /// Frames stepped before recording (and before calibrating): the random initial placement
+    /// interpenetrates bodies, so the first ~60 frames cost 1.5-3x the steady state.
+    pub warmup_frames: u32,
+    /// Worker threads for the curves part (its budgets are in sphere tests, so its results do not
+    /// depend on timing). The table part always runs on one thread, so T is not disturbed.
+    pub jobs: usize,
+    /// Output directory.
+    pub out: PathBuf,
+    /// Write one CSV of per-frame records per run.
+    pub frame_csv: bool,
+    /// Show a progress bar (only drawn when stderr is a terminal).
+    pub progress: bool,
+}
+
+impl Default for StudyConfig {
+    /// The full protocol of the issue: paper N, 5,000 frames, 5 seeds, every scheduler, budgets at
+    /// 1/100 and 1/10 of exact cost and at the paper's times / 100; curves off.
+    fn default() -> Self {
+        Self {
+            table: true,
+            ns: PAPER_NS.to_vec(),
+            frames: 5_000,
+            seeds: (1..=5).collect(),
+            schedulers: SchedulerKind::ALL.to_vec(),
+            fractions: vec![0.01, 0.1],
+            paper_ms_scale: Some(100.0),
+            tests_budgets: Vec::new(),
+            curves: None,
+            gaze: GazeSpec::Scripted,
+            model: PerceptualModel::default(),
+            threshold_deg: 5.0,
+            calibration_frames: 60,
+            warmup_frames: 60,
+            jobs: 1,
+            out: PathBuf::from("target/foveal-bench/study"),
+            frame_csv: true,
+            progress: true,
+        }
+    }
+}
+
+impl StudyConfig {
+    /// The `--quick` preset: every part of the protocol (all N of the paper, every mode and
+    /// scheduler, the budget sweep), small enough to finish in under a minute in release.
+    pub fn quick() -> Self {
+        Self {
+            frames: 50,
+            seeds: (1..=3).collect(),
+            fractions: vec![0.1],
+            tests_budgets: vec![2_000],
+            curves: Some(CurvesConfig {
+                ns: vec![300],
+                frames: 30,
+                fractions: vec![0.01, 0.1, 0.5],
+            }),
+            calibration_frames: 20,
+            warmup_frames: 20,
+            jobs: 2,
+            out: PathBuf::from("target/foveal-bench/quick"),
+            ..Self::default()
+        }
+    }
+
+    /// The paper's F1 in pixels, the other model the paper uses (figures 5(b), 6(a)).
+    pub fn f1() -> PerceptualModel {
+        PerceptualModel {
+            function: PerceptualFunction::F1,
+            unit: EccentricityUnit::Pixels,
+        }
+    }
+
+    /// Engine config for one run.
+    pub fn sim_config(&self, spec: &RunSpec, exact_cost: f64) -> SimConfig {
+        SimConfig {
+            scene: SceneConfig::paper(spec.n, spec.seed),
+            budget: spec.mode.budget(exact_cost),
+            scheduler: spec.scheduler,
+            eccentricity_threshold_deg: self.threshold_deg,
+            schedule_model: self.model,
+            measure_model: self.model,
+            audit: true,
+            calibration_frames: self.calibration_frames,
+            ..SimConfig::default()
+        }
+    }
+
+    /// Interrupted modes of the table part for `n`.
+    pub fn table_modes(&self, n: u32) -> Vec<Mode> {
+        let mut modes: Vec<Mode> = self.fractions.iter().map(|&f| Mode::Fraction(f)).collect();
+        if let (Some(scale), Some(ms)) = (self.paper_ms_scale, paper_target_ms(n)) {
+            modes.push(Mode::WallMs(ms / scale));
+        }
+        modes.extend(self.tests_budgets.iter().map(|&t| Mode::Tests(t)));
+        modes
+    }
+
+    /// Every run of the study, grouped by (part, N, seed) in execution order.
+    pub fn plan(&self) -> Vec<RunSpec> {
+        let mut out = Vec::new();
+        let base = |part, n, seed, mode, scheduler, frames| RunSpec {
+            part,
+            n,
+            seed,
+            mode,
+            scheduler,
+            frames,
+        };
+        if self.table {
+            for &n in &self.ns {
+                for &seed in &self.seeds {
+                    let f = self.frames;
+                    out.push(base(
+                        Part::Table,
+                        n,
+                        seed,
+                        Mode::Exact,
+                        SchedulerKind::RoundRobin,
+                        f,
+                    ));
+                    out.push(base(
+                        Part::Table,
+                        n,
+                        seed,
+                        Mode::Zero,
+                        SchedulerKind::RoundRobin,
+                        f,
+                    ));
+                    for mode in self.table_modes(n) {
+                        for &s in &self.schedulers {
+                            out.push(base(Part::Table, n, seed, mode, s, f));
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(c) = &self.curves {
+            for &n in &c.ns {
+                for &seed in &self.seeds {
+                    for &fr in &c.fractions {
+                        for &s in &self.schedulers {
+                            out.push(base(Part::Curves, n, seed, Mode::Fraction(fr), s, c.frames));
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+}

@@ -1,0 +1,186 @@
+//! A tiny study through the library API: every mode, scheduler and output of the protocol of the
+//! paper's section 4 (and the budget sweep), with a handful of frames, so `cargo test` covers the
+//! whole pipeline in seconds.
+
+use std::path::{Path, PathBuf};
+
+use foveal_bench::protocol::{CurvesConfig, StudyConfig};
+use foveal_bench::{GazeSpec, run_study};
+
+fn out_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("foveal-bench-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn tiny(out: PathBuf) -> StudyConfig {
+    StudyConfig {
+        ns: vec![10, 30],
+        frames: 6,
+        seeds: vec![1, 2],
+        fractions: vec![0.1],
+        tests_budgets: vec![200],
+        curves: Some(CurvesConfig {
+            ns: vec![30],
+            frames: 4,
+            fractions: vec![0.05, 0.5],
+        }),
+        calibration_frames: 3,
+        warmup_frames: 2,
+        jobs: 2,
+        progress: false,
+        out,
+        ..StudyConfig::default()
+    }
+}
+
+/// Parse a CSV: a header and rows of the same width whose non-empty fields are numbers, except
+/// the named text columns.
+fn parse_csv(path: &Path, text_cols: &[&str]) -> (Vec<String>, Vec<Vec<String>>) {
+    let text = std::fs::read_to_string(path).expect("csv readable");
+    let mut lines = text.lines();
+    let header: Vec<String> = lines
+        .next()
+        .expect("header")
+        .split(',')
+        .map(String::from)
+        .collect();
+    let rows: Vec<Vec<String>> = lines
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    assert!(!rows.is_empty(), "{} has no rows", path.display());
+    for r in &rows {
+        assert_eq!(r.len(), header.len(), "{}: {r:?}", path.display());
+        for (h, v) in header.iter().zip(r) {
+            if text_cols.contains(&h.as_str()) || v.is_empty() {
+                continue;
+            }
+            assert!(
+                v.parse::<f64>().is_ok(),
+                "{}: column {h} = {v:?} is not a number",
+                path.display()
+            );
+        }
+    }
+    (header, rows)
+}
+
+#[test]
+fn tiny_study_writes_every_output_and_the_csvs_parse() {
+    let out = out_dir("tiny");
+    let cfg = tiny(out.clone());
+    let res = run_study(&cfg).expect("study runs");
+    // 2 N x 2 seeds x (exact + zero + 6 schedulers x (fraction + ms + tests)) + curves 2 x 2 x 6.
+    assert_eq!(res.runs.len(), 2 * 2 * (2 + 6 * 3) + 2 * 2 * 6);
+    for f in [
+        "table_runs.csv",
+        "table_summary.csv",
+        "table_report.md",
+        "curves_runs.csv",
+        "curves_summary.csv",
+        "curves_report.md",
+    ] {
+        assert!(out.join(f).is_file(), "missing {f}");
+    }
+    for fig in [
+        "fig4_time",
+        "fig5_inaccuracy",
+        "fig6_schedulers_f0.1",
+        "fig6_schedulers_ms",
+        "curves_n30",
+    ] {
+        for ext in ["svg", "png"] {
+            let p = out.join("figures").join(format!("{fig}.{ext}"));
+            let len = std::fs::metadata(&p).map(|m| m.len()).unwrap_or(0);
+            assert!(len > 100, "missing or empty {}", p.display());
+        }
+    }
+    let (_, runs) = parse_csv(&out.join("table_runs.csv"), &["part", "mode", "scheduler"]);
+    assert_eq!(runs.len(), 2 * 2 * 20);
+    let (h, summary) = parse_csv(
+        &out.join("table_summary.csv"),
+        &["part", "mode", "scheduler"],
+    );
+    assert!(h.contains(&"true_p_ci95".to_string()));
+    assert_eq!(summary.len(), 2 * 20);
+    parse_csv(
+        &out.join("curves_summary.csv"),
+        &["part", "mode", "scheduler"],
+    );
+
+    // Per-frame records: one file per run, one row per frame, the audit's columns filled.
+    let frames = out.join("frames");
+    let n_files = std::fs::read_dir(&frames).expect("frames dir").count();
+    assert_eq!(n_files, res.runs.len());
+    let (h, rows) = parse_csv(&frames.join("table_n30_s1_zero_round-robin.csv"), &[]);
+    assert_eq!(rows.len(), 6);
+    let col = |name: &str| h.iter().position(|c| c == name).expect("column");
+    for r in &rows {
+        assert_eq!(r[col("sphere_tests")], "0", "interrupt at 0 does no test");
+        assert!(!r[col("true_p")].is_empty(), "audit on: true P present");
+        assert!(!r[col("p")].is_empty(), "scripted gaze: P present");
+    }
+    let (_, rows) = parse_csv(&frames.join("table_n30_s2_exact_round-robin.csv"), &[]);
+    assert!(rows.iter().all(|r| r[col("deemed")] == "0"));
+
+    let md = std::fs::read_to_string(out.join("table_report.md")).expect("report");
+    assert!(md.contains("T exact / interrupted"), "{md}");
+    let md = std::fs::read_to_string(out.join("curves_report.md")).expect("report");
+    assert!(md.contains("expected-gain /"), "{md}");
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn deterministic_budgets_replay_exactly() {
+    let mut a = tiny(out_dir("det-a"));
+    a.paper_ms_scale = None;
+    a.table = false;
+    a.frame_csv = false;
+    let mut b = a.clone();
+    b.out = out_dir("det-b");
+    b.jobs = 1;
+    let ra = run_study(&a).expect("a");
+    let rb = run_study(&b).expect("b");
+    assert_eq!(ra.runs.len(), rb.runs.len());
+    for (x, y) in ra.runs.iter().zip(&rb.runs) {
+        assert_eq!(x.spec, y.spec);
+        assert_eq!(x.true_p.mean().to_bits(), y.true_p.mean().to_bits());
+        assert_eq!(x.tests.mean().to_bits(), y.tests.mean().to_bits());
+    }
+    let _ = std::fs::remove_dir_all(&a.out);
+    let _ = std::fs::remove_dir_all(&b.out);
+}
+
+#[test]
+fn a_bad_gaze_trace_is_an_error_not_a_panic() {
+    let out = out_dir("badgaze");
+    let mut cfg = tiny(out.clone());
+    cfg.gaze = GazeSpec::Csv(out.join("does-not-exist.csv"));
+    let err = run_study(&cfg).expect_err("missing trace");
+    assert!(err.to_string().contains("does-not-exist.csv"), "{err}");
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn recorded_trace_drives_a_study() {
+    let out = out_dir("recorded");
+    std::fs::create_dir_all(&out).expect("dir");
+    let trace = out.join("trace.csv");
+    let mut csv = String::from("# synthetic\nt_s,xpos,ypos,ps\n");
+    for i in 0..200 {
+        let t = f64::from(i) * 0.001;
+        if i % 50 == 10 {
+            csv.push_str(&format!("{t:.3},,,\n"));
+        } else {
+            csv.push_str(&format!("{t:.3},{},{},1000\n", 900 + i, 500));
+        }
+    }
+    std::fs::write(&trace, csv).expect("write trace");
+    let mut cfg = tiny(out.clone());
+    cfg.gaze = GazeSpec::Csv(trace);
+    cfg.curves = None;
+    cfg.ns = vec![10];
+    let res = run_study(&cfg).expect("study runs");
+    assert!(res.runs.iter().all(|r| r.p.count() > 0));
+    let _ = std::fs::remove_dir_all(&out);
+}
