@@ -2,7 +2,7 @@
 
 use std::time::Duration;
 
-use foveal_engine::BudgetSpec;
+use foveal_engine::{BudgetSpec, EccentricityUnit, PerceptualFunction, PerceptualModel};
 use foveal_proto::pb;
 use foveal_tests::*;
 
@@ -53,6 +53,13 @@ async fn configure(
 async fn tight_budget_is_spent_near_the_fixation() {
     let mut config = small_config(400, 60.0);
     config.sim.budget = BudgetSpec::FractionOfExact(0.4);
+    // Measure with a steep fall-off (weight e^-1 per degree), so P counts what happens near the
+    // fixation: the claim under test is that near pairs are resolved more often, not that the
+    // whole screen's error drops (for the latter see docs/BENCHMARKS.md: at this budget it does not).
+    config.sim.measure_model = PerceptualModel {
+        function: PerceptualFunction::F2 { c: 1.0 },
+        unit: EccentricityUnit::Degrees,
+    };
     config.gaze_max_age = Duration::from_secs(600);
     let server = TestServer::start(config).await;
     let mut client = server.client().await;
@@ -69,12 +76,10 @@ async fn tight_budget_is_spent_near_the_fixation() {
     let first = configure(&mut client, pb::Scheduler::RoundRobin).await;
     let (p_rr, deemed_rr) = perceived_error(&mut frames, first, FRAMES).await;
     assert!(deemed_rr > 0, "the budget must bind");
-    // Priority-only resolves the inner queue completely and leaves far pairs untested, so its gain
-    // over round-robin is modest at this budget; expected-gain weighs cost too and does far better
-    // (docs/BENCHMARKS.md has the full curves). Both runs are deterministic.
+    // Both runs are deterministic (sphere-test budget, fixed fixation).
     for (scheduler, at_most) in [
-        (pb::Scheduler::PriorityOnly, 0.95),
-        (pb::Scheduler::ExpectedGain, 0.6),
+        (pb::Scheduler::PriorityOnly, 0.8),
+        (pb::Scheduler::ExpectedGain, 0.5),
     ] {
         let first = configure(&mut client, scheduler).await;
         let (p, deemed) = perceived_error(&mut frames, first, FRAMES).await;

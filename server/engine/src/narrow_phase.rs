@@ -427,37 +427,64 @@ pub fn brute_force_colliding(tree: &SphereTree, world: &World, a: usize, b: usiz
 }
 
 /// True separation of two bodies' leaf-sphere sets: the smallest `|ca - cb| - ra - rb` over leaf
-/// pairs (<= 0 when they collide), with the closest pair's centres in world coordinates. Found by
-/// branch and bound over both trees, which gives the same minimum as the full leaf-by-leaf scan.
-pub fn separation(tree: &SphereTree, world: &World, a: usize, b: usize) -> (f64, Vec3, Vec3) {
+/// pairs (<= 0 when they collide), with the closest pair's centres in world coordinates.
+///
+/// Branch and bound over both trees, nearest sphere pair first: a parent contains its leaves, so its
+/// distance is a lower bound for every leaf pair below it, and a subtree whose bound is no better than
+/// the best leaf pair found is skipped. This gives the same minimum as the full leaf-by-leaf scan at
+/// a small fraction of its cost. `stack` is scratch space, reused between calls.
+pub fn separation(
+    tree: &SphereTree,
+    world: &World,
+    a: usize,
+    b: usize,
+    stack: &mut Vec<(f32, u16, u16, u8, u8)>,
+) -> (f64, Vec3, Vec3) {
     let f = PairFrame::new(world, a, b);
     let dist = |sa: usize, sb: usize| -> f32 {
         let (x, y) = (tree.sphere(sa), tree.sphere(sb));
         (LVec3::from_vec4(x) - f.map(y)).length() - x.w - y.w
     };
-    let depth = tree.depth();
-    let mut best = (f32::INFINITY, 0usize, 0usize);
-    let mut stack = vec![(0usize, 0usize, 1usize, 1usize)];
-    while let Some((sa, sb, la, lb)) = stack.pop() {
-        let d = dist(sa, sb);
-        // Lower bound: a parent sphere contains its leaves, so no leaf pair below is closer.
-        if d >= best.0 {
+    let depth = tree.depth() as u8;
+    let mut best = (f32::INFINITY, 0u16, 0u16);
+    stack.clear();
+    stack.push((dist(0, 0), 0, 0, 1, 1));
+    let mut kids = [(0f32, 0u16, 0u16); 8];
+    while let Some((bound, sa, sb, la, lb)) = stack.pop() {
+        if bound >= best.0 {
             continue;
         }
         if la == depth && lb == depth {
-            best = (d, sa, sb);
+            best = (bound, sa, sb);
             continue;
         }
-        if la <= lb && la < depth || lb >= depth {
-            stack.extend(tree.children(sa).map(|c| (c, sb, la + 1, lb)));
-        } else {
-            stack.extend(tree.children(sb).map(|c| (sa, c, la, lb + 1)));
+        let descend_a = la <= lb && la < depth || lb >= depth;
+        let range = tree.children(if descend_a { sa } else { sb } as usize);
+        let kids = &mut kids[..range.len()];
+        for (k, c) in kids.iter_mut().zip(range) {
+            *k = if descend_a {
+                (dist(c, sb as usize), c as u16, sb)
+            } else {
+                (dist(sa as usize, c), sa, c as u16)
+            };
         }
+        // Farthest first onto the stack, so the nearest child is explored next.
+        kids.sort_unstable_by(|x, y| y.0.total_cmp(&x.0));
+        let (na, nb) = if descend_a {
+            (la + 1, lb)
+        } else {
+            (la, lb + 1)
+        };
+        stack.extend(
+            kids.iter()
+                .filter(|k| k.0 < best.0)
+                .map(|&(d, x, y)| (d, x, y, na, nb)),
+        );
     }
     let pa = world.position[a];
     let basis = glam::Mat3::from(world.basis[a]).as_dmat3();
-    let ca = pa + basis * tree.center(best.1).as_dvec3();
-    let cb = pa + basis * f.map(tree.sphere(best.2)).as_dvec3();
+    let ca = pa + basis * tree.center(best.1 as usize).as_dvec3();
+    let cb = pa + basis * f.map(tree.sphere(best.2 as usize)).as_dvec3();
     (f64::from(best.0), ca, cb)
 }
 
@@ -502,7 +529,7 @@ mod tests {
             let tree = SphereTree::build(Star::new(0.2), depth).expect("tree");
             let w = two_bodies(Vec3::from_array(d) * scale, quat(qa), quat(qb));
             prop_assert_eq!(run_exact(&tree, &w), brute_force_colliding(&tree, &w, 0, 1));
-            let (sep, _, _) = separation(&tree, &w, 0, 1);
+            let (sep, _, _) = separation(&tree, &w, 0, 1, &mut Vec::new());
             if brute_force_colliding(&tree, &w, 0, 1) {
                 prop_assert!(sep <= 1e-6, "colliding pair with separation {}", sep);
             } else {

@@ -31,6 +31,8 @@ pub struct Simulation {
     sim_time: f64,
     /// Per-body screen positions, reused by prioritisation every frame.
     screen: Vec<[f64; 2]>,
+    /// Scratch stack of the audit's separation queries.
+    audit_stack: Vec<(f32, u16, u16, u8, u8)>,
 }
 
 impl Simulation {
@@ -59,8 +61,9 @@ impl Simulation {
         Ok(sim)
     }
 
-    /// Mean sphere tests per frame of the exact narrow phase over the next `frames` frames of this
-    /// scene, measured on a copy (this simulation is not advanced).
+    /// Mean sphere tests per frame of the exact narrow phase over `frames` frames of this scene,
+    /// counted after `calibration_warmup` uncounted frames, measured on a copy (this simulation is
+    /// not advanced).
     pub fn exact_cost(&self, frames: u32) -> f64 {
         let mut cfg = self.config.clone();
         cfg.budget = BudgetSpec::Exact;
@@ -73,6 +76,9 @@ impl Simulation {
             self.broad.clone(),
             self.viewer,
         );
+        for _ in 0..self.config.calibration_warmup {
+            copy.step(None, &FrozenClock);
+        }
         let total: u64 = (0..frames.max(1))
             .map(|_| copy.step(None, &FrozenClock).sphere_tests)
             .sum();
@@ -99,6 +105,7 @@ impl Simulation {
             next_index: 0,
             sim_time: 0.0,
             screen: Vec::new(),
+            audit_stack: Vec::new(),
             config,
         }
     }
@@ -229,7 +236,13 @@ impl Simulation {
         });
         self.measure(&mut r, measure_view.as_ref());
         if self.config.audit {
-            r.audit = Some(self.audit(measure_view.as_ref()));
+            r.audit = Some(audit(
+                &self.narrow,
+                &self.tree,
+                &self.world,
+                measure_view.as_ref(),
+                &mut self.audit_stack,
+            ));
         }
         profile.measure_ns = clock.now_ns() - t4;
         r.profile = profile;
@@ -259,38 +272,6 @@ impl Simulation {
         }
         r.geometric_inaccuracy = delta;
         r.perceived_inaccuracy = view.map(|_| p_sum);
-    }
-
-    /// The exact answer for every deemed pair: whether it collides, and for those that do not, the
-    /// true gap (separation of the leaf-sphere sets) and its perceived weight at the closest points.
-    fn audit(&self, view: Option<&FrameView<'_>>) -> AuditReport {
-        let mut a = AuditReport::default();
-        let mut p_sum = 0.0;
-        for p in self
-            .narrow
-            .pairs
-            .iter()
-            .filter(|p| p.status == PairStatus::Deemed)
-        {
-            let (sep, ca, cb) = separation(&self.tree, &self.world, p.a as usize, p.b as usize);
-            if sep <= 0.0 {
-                a.true_positives += 1;
-                continue;
-            }
-            a.false_positives += 1;
-            a.geometric_inaccuracy += sep;
-            if let Some(v) = view {
-                // Closest points of the two leaf spheres lie on their centre line; all leaves share
-                // one radius, (d - sep) / 2.
-                let u = (cb - ca).normalize_or_zero();
-                let d = (cb - ca).length();
-                let gap_a = ca + u * (0.5 * (d - sep));
-                let gap_b = gap_a + u * sep;
-                p_sum += v.weight_points(gap_a, gap_b, (gap_a + gap_b) * 0.5);
-            }
-        }
-        a.perceived_inaccuracy = view.map(|_| p_sum);
-        a
     }
 
     /// Exact colliding pairs among the current candidates (each resolved to completion).
@@ -338,4 +319,37 @@ fn prioritise(
         p.priority = view.model.evaluate(g, e) as f32;
         p.inner = e_deg <= threshold_deg;
     }
+}
+
+/// The exact answer for every deemed pair: whether it collides, and for those that do not, the
+/// true gap (separation of the leaf-sphere sets) and its perceived weight at the closest points.
+fn audit(
+    np: &NarrowPhase,
+    tree: &SphereTree,
+    world: &World,
+    view: Option<&FrameView<'_>>,
+    stack: &mut Vec<(f32, u16, u16, u8, u8)>,
+) -> AuditReport {
+    let mut a = AuditReport::default();
+    let mut p_sum = 0.0;
+    for p in np.pairs.iter().filter(|p| p.status == PairStatus::Deemed) {
+        let (sep, ca, cb) = separation(tree, world, p.a as usize, p.b as usize, stack);
+        if sep <= 0.0 {
+            a.true_positives += 1;
+            continue;
+        }
+        a.false_positives += 1;
+        a.geometric_inaccuracy += sep;
+        if let Some(v) = view {
+            // Closest points of the two leaf spheres lie on their centre line; all leaves share
+            // one radius, (d - sep) / 2.
+            let u = (cb - ca).normalize_or_zero();
+            let d = (cb - ca).length();
+            let gap_a = ca + u * (0.5 * (d - sep));
+            let gap_b = gap_a + u * sep;
+            p_sum += v.weight_points(gap_a, gap_b, (gap_a + gap_b) * 0.5);
+        }
+    }
+    a.perceived_inaccuracy = view.map(|_| p_sum);
+    a
 }
