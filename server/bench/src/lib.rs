@@ -32,6 +32,7 @@ pub mod protocol;
 pub mod report;
 pub mod runner;
 pub mod stats;
+pub mod stress;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};

@@ -1,7 +1,7 @@
 //! `foveal-bench`: command line of the benchmark suite. Parses arguments and calls the library.
 //!
-//! Subcommands are variants of [`Command`]; adding one (e.g. `stress`) is a new variant with its own
-//! `Args` struct and one arm in [`main`]'s `match`.
+//! Subcommands are variants of [`Command`] (`study`, `stress`); adding one is a new variant with its
+//! own `Args` struct and one arm in [`main`]'s `match`.
 
 use std::path::PathBuf;
 
@@ -24,7 +24,35 @@ struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Re-run the time-versus-error study of the paper's section 4 (figures 4-6), extended.
-    Study(StudyArgs),
+    Study(Box<StudyArgs>),
+    /// Soak the engine: long runs checked every frame (finite state, bodies inside, unit
+    /// quaternions, momentum and energy, sticking, tunnelling). Exits non-zero if a check fails.
+    Stress(StressArgs),
+}
+
+#[derive(Debug, Args)]
+struct StressArgs {
+    /// Frame counts divided by 100 (seconds instead of minutes).
+    #[arg(long)]
+    quick: bool,
+    /// Write the result table (markdown) to this file as well as stdout.
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+fn stress(args: &StressArgs) -> Result<()> {
+    use foveal_bench::stress;
+    let limits = foveal_engine::soak::SoakLimits::default();
+    let results = stress::run(stress::default_cases(args.quick), limits, true)?;
+    let table = stress::markdown(&results, &limits);
+    print!("{table}");
+    if let Some(path) = &args.out {
+        std::fs::write(path, &table).with_context(|| format!("writing {}", path.display()))?;
+    }
+    if let Some(bad) = results.iter().find(|r| !r.passed) {
+        bail!("stress case {} failed: {:?}", bad.case.name, bad.report);
+    }
+    Ok(())
 }
 
 #[derive(Debug, Args)]
@@ -194,5 +222,6 @@ fn main() -> Result<()> {
     let cli = Cli::parse();
     match &cli.command {
         Command::Study(args) => study(args),
+        Command::Stress(args) => stress(args),
     }
 }
