@@ -3,7 +3,9 @@
 //! 1. Gaze → frame latency: a client streams one gaze sample at a fresh point, waits for the first
 //!    frame whose fixation is that point, and records the time between sending the sample and
 //!    receiving that frame; samples are sent at random phases of the frame period. Reported as
-//!    p50/p90/p99/max, without and with poses in the watched frames.
+//!    p50/p90/p99/max, without and with poses in the watched frames. Beside it, the frame's own
+//!    `fixation.age_s`: from the server receiving the sample to the start of the frame that used it
+//!    (the part the loop controls; the rest is that frame's compute time and delivery).
 //! 2. Fan-out: 32 subscribers watch frames with poses; the loop must hold its frame rate (frames
 //!    simulated per second, from GetStatus) whatever the subscribers manage to take (frames
 //!    received and `dropped_before`, per subscriber).
@@ -109,6 +111,7 @@ async fn latency(
     });
     let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
     let mut latencies = Vec::with_capacity(samples);
+    let mut ages = Vec::with_capacity(samples);
     let mut profiles = Vec::new();
     let t0 = Instant::now();
     for i in 0..samples {
@@ -131,8 +134,10 @@ async fn latency(
             if let Some(p) = frame.profile {
                 profiles.push(p);
             }
-            if frame.fixation.is_some_and(|f| f.x == x && f.y == y) {
+            if let Some(f) = frame.fixation.filter(|f| f.x == x && f.y == y) {
                 latencies.push(sent.elapsed());
+                // Receipt by the server to the start of the frame that used it.
+                ages.push(Duration::from_secs_f64(f.age_s.max(0.0)));
                 break;
             }
         }
@@ -142,6 +147,16 @@ async fn latency(
     drop(tx);
     gaze.await??;
     latencies.sort_unstable();
+    ages.sort_unstable();
+    println!(
+        "gaze received -> used by a frame (frame start, server clock, poses {}): n={} p50={:.2} ms p90={:.2} ms p99={:.2} ms max={:.2} ms",
+        if poses { "on" } else { "off" },
+        ages.len(),
+        quantile_ms(&ages, 0.5),
+        quantile_ms(&ages, 0.9),
+        quantile_ms(&ages, 0.99),
+        quantile_ms(&ages, 1.0),
+    );
     println!(
         "gaze -> frame latency (StreamGaze, loopback, poses {}): n={} p50={:.2} ms p90={:.2} ms p99={:.2} ms max={:.2} ms",
         if poses { "on" } else { "off" },
