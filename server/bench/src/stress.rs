@@ -88,19 +88,22 @@ pub fn markdown(results: &[StressResult], limits: &SoakLimits) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "Limits: bodies inside the volume within {:e} of its side; | |q| - 1 | <= {:e}; momentum (net of wall impulses) and kinetic energy drift <= 1e-9 relative; no pair colliding for more than {} consecutive frames without moving apart; no tunnelling.\n",
+        "Limits: bodies inside the volume within {:e} of its side; | |q| - 1 | <= {:e}; momentum (net of wall impulses) and kinetic energy drift <= 1e-9 relative; no pair colliding for more than {} consecutive frames without moving apart while only the two of them touch (two-body sticking); no tunnelling. Long contacts pushed together by a third body or a wall are counted, not failed.\n",
         limits.outside_fraction, limits.quat_tolerance, limits.stuck_frames
     );
     let _ = writeln!(
         s,
-        "| case | frames | wall s | non-finite frames | max outside | max quat error | momentum drift | energy drift | longest contact (frames) | stuck | tunnelled | collisions | result |"
+        "| case | frames | wall s | non-finite frames | max outside | max quat error | momentum drift | energy drift | longest contact (frames) | long contacts (3rd body/wall) | stuck | tunnelled | collisions | result |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(
+        s,
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+    );
     for r in results {
         let p = &r.report;
         let _ = writeln!(
             s,
-            "| {} | {} | {:.0} | {} | {:.1e} | {:.1e} | {:.1e} | {:.1e} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {:.0} | {} | {:.1e} | {:.1e} | {:.1e} | {:.1e} | {} | {} | {} | {} | {} | {} |",
             r.case.name,
             p.frames,
             r.wall_s,
@@ -110,6 +113,7 @@ pub fn markdown(results: &[StressResult], limits: &SoakLimits) -> String {
             p.max_momentum_drift,
             p.max_energy_drift,
             p.longest_overlap,
+            p.long_contacts,
             p.stuck_pairs,
             p.tunnelled,
             p.collisions,

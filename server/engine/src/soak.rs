@@ -23,8 +23,11 @@ pub struct SoakLimits {
     /// Largest allowed | |q| - 1 |.
     pub quat_tolerance: f64,
     /// A pair overlapping at leaf level for more than this many consecutive frames, whose centres
-    /// are no further apart than when the overlap began, is stuck. (Spinning spikes can keep a
-    /// slowly separating pair in genuine contact for a second or more: that is not sticking.)
+    /// are no further apart than when the overlap began, and whose velocities changed only by
+    /// exchanges with each other meanwhile, is stuck: the two-body jitter the approach-only
+    /// response exists to prevent. (Spinning spikes keep a slowly separating pair in genuine
+    /// contact for a second or more, and a third body or a wall can push a pair back together:
+    /// those long contacts are counted apart, in `long_contacts`.)
     pub stuck_frames: u32,
 }
 
@@ -55,8 +58,11 @@ pub struct SoakReport {
     pub max_energy_drift: f64,
     /// Longest run of consecutive frames any pair stayed colliding at leaf level.
     pub longest_overlap: u32,
-    /// Pairs that stayed colliding longer than the limit, not counting pairs that started overlapping.
+    /// Pairs stuck by the two-body definition of [`SoakLimits::stuck_frames`], not counting pairs
+    /// that started overlapping.
     pub stuck_pairs: u64,
+    /// Contacts longer than the limit in which a third body or a wall took part (not failures).
+    pub long_contacts: u64,
     /// Pairs whose cores met during a step while neither end of the step was colliding.
     pub tunnelled: u64,
     /// Sum of leaf-level collisions over all frames.
@@ -104,6 +110,7 @@ pub fn soak(
     // the start of the streak, and whether it was already counted as stuck.
     let mut streak: HashMap<(u32, u32), Streak> = HashMap::new();
     let mut prev_positions: Vec<Vec3> = sim.world().position.clone();
+    let mut prev_velocities: Vec<Vec3> = sim.world().velocity.clone();
     let mut prev_colliding: std::collections::HashSet<(u32, u32)> = Default::default();
     for f in 0..frames {
         sim.step(None, &FrozenClock);
@@ -142,14 +149,22 @@ pub fn soak(
         report.collisions += colliding.len() as u64;
         streak.retain(|k, _| colliding.contains(k));
         for &k in &colliding {
-            let dist = (w.position[k.1 as usize] - w.position[k.0 as usize]).length();
+            let (a, b) = (k.0 as usize, k.1 as usize);
+            let dist = (w.position[b] - w.position[a]).length();
+            // Velocities changed by anything but an exchange within the pair: a third body or a wall.
+            let own = |i: usize, j: usize| {
+                w.velocity[i] == prev_velocities[i] || w.velocity[i] == prev_velocities[j]
+            };
+            let disturbed = !own(a, b) || !own(b, a);
             let e = streak.entry(k).or_insert(Streak {
                 frames: 0,
                 initial: f == 0,
                 start_distance: dist,
                 counted: false,
+                disturbed: false,
             });
             e.frames += 1;
+            e.disturbed |= disturbed;
             report.longest_overlap = report.longest_overlap.max(e.frames);
             if e.frames > limits.stuck_frames
                 && !e.initial
@@ -157,7 +172,11 @@ pub fn soak(
                 && dist <= e.start_distance
             {
                 e.counted = true;
-                report.stuck_pairs += 1;
+                if e.disturbed {
+                    report.long_contacts += 1;
+                } else {
+                    report.stuck_pairs += 1;
+                }
             }
         }
         // Tunnelling: among this step's candidates, centres whose closest approach during the
@@ -174,6 +193,7 @@ pub fn soak(
             }
         }
         prev_positions.clone_from(&w.position);
+        prev_velocities.clone_from(&w.velocity);
         prev_colliding = colliding;
         if (f + 1) % 1000 == 0 {
             progress(f + 1);
@@ -187,6 +207,7 @@ struct Streak {
     initial: bool,
     start_distance: f64,
     counted: bool,
+    disturbed: bool,
 }
 
 /// Smallest |d0 + s (d1 - d0)| for s in [0, 1].
