@@ -25,6 +25,11 @@ pub struct World {
     pub lo: Vec3,
     /// Maximum corner of the volume.
     pub hi: Vec3,
+    /// Per-body rotation over one step, exp(ω dt), for the dt in `spin_step_dt`. Spins never change
+    /// (the response exchanges linear velocities only), so the trigonometry is done once, not per
+    /// frame; the result is bit-identical to recomputing it.
+    spin_step: Vec<Quat>,
+    spin_step_dt: f64,
     /// Sum of the velocity changes made by wall reflections since generation (unit masses, so this
     /// is the momentum the walls put in): momentum minus this is conserved by everything else.
     pub wall_impulse: Vec3,
@@ -49,6 +54,8 @@ impl World {
             lo,
             hi,
             wall_impulse: Vec3::ZERO,
+            spin_step: Vec::new(),
+            spin_step_dt: f64::NAN,
         };
         for _ in 0..n {
             let p = Vec3::new(
@@ -93,6 +100,11 @@ impl World {
     /// reflected (DESIGN.md "walls reflect the normal velocity component"), which keeps the speed.
     pub fn integrate(&mut self, dt: f64) {
         let (lo, hi) = (self.lo, self.hi);
+        if self.spin_step_dt.to_bits() != dt.to_bits() || self.spin_step.len() != self.spin.len() {
+            self.spin_step.clear();
+            self.spin_step.extend(self.spin.iter().map(|&w| Quat::from_scaled_axis(w * dt)));
+            self.spin_step_dt = dt;
+        }
         for i in 0..self.position.len() {
             let mut p = self.position[i] + self.velocity[i] * dt;
             let mut v = self.velocity[i];
@@ -108,9 +120,8 @@ impl World {
             self.wall_impulse += v - self.velocity[i];
             self.position[i] = p;
             self.velocity[i] = v;
-            let w = self.spin[i] * dt;
-            if w != Vec3::ZERO {
-                let q = (Quat::from_scaled_axis(w) * self.orientation[i]).normalize();
+            if self.spin[i] != Vec3::ZERO {
+                let q = (self.spin_step[i] * self.orientation[i]).normalize();
                 self.orientation[i] = q;
                 self.basis[i] = LMat3::from(glam::DMat3::from_quat(q).as_mat3());
             }
