@@ -102,7 +102,8 @@ impl World {
         let (lo, hi) = (self.lo, self.hi);
         if self.spin_step_dt.to_bits() != dt.to_bits() || self.spin_step.len() != self.spin.len() {
             self.spin_step.clear();
-            self.spin_step.extend(self.spin.iter().map(|&w| Quat::from_scaled_axis(w * dt)));
+            self.spin_step
+                .extend(self.spin.iter().map(|&w| Quat::from_scaled_axis(w * dt)));
             self.spin_step_dt = dt;
         }
         for i in 0..self.position.len() {
