@@ -86,6 +86,16 @@ impl<'c> Meter<'c> {
         self.exhausted
     }
 
+    /// Whether a wall-clock deadline has passed (always false for other budgets). For work that does
+    /// no sphere tests, such as prioritisation, which a sphere-test budget does not count.
+    #[inline]
+    pub fn exhausted_by_clock(&mut self) -> bool {
+        match self.budget {
+            FrameBudget::Deadline(_) => self.exhausted(0),
+            FrameBudget::Unlimited | FrameBudget::Tests(_) => false,
+        }
+    }
+
     /// Whether the budget ran out during the frame.
     pub fn was_exhausted(&self) -> bool {
         self.exhausted

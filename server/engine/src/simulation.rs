@@ -178,15 +178,6 @@ impl Simulation {
                 fixation_px: px,
                 model: self.config.schedule_model,
             });
-        if let Some(view) = &schedule_view {
-            prioritise(
-                &mut self.narrow,
-                &self.world,
-                view,
-                self.config.eccentricity_threshold_deg,
-                &mut self.screen,
-            );
-        }
         let budget = match self.config.budget {
             // The paper's target time covers all collision handling, so the deadline counts from
             // the start of the broad phase.
@@ -194,6 +185,16 @@ impl Simulation {
             _ => self.budget,
         };
         let mut meter = Meter::new(budget, clock);
+        if let Some(view) = &schedule_view {
+            prioritise(
+                &mut self.narrow,
+                &self.world,
+                view,
+                self.config.eccentricity_threshold_deg,
+                &mut self.screen,
+                &mut meter,
+            );
+        }
         let work = Work {
             tree: &self.tree,
             world: &self.world,
@@ -296,18 +297,26 @@ impl Simulation {
 /// collision their midpoint (equal bounding spheres). Body centres are projected once per body into
 /// `screen`, not once per pair, and the eccentricity in degrees serves both the model and the queue
 /// threshold when the model works in degrees: this runs over every candidate pair inside the budget.
+/// It checks a wall-clock deadline every 64 pairs and stops when it has passed: the pairs it did not
+/// reach keep priority 0 in the outer queue, and the scheduler then deems them, so a budget smaller
+/// than the prioritisation itself is still held.
 fn prioritise(
     np: &mut NarrowPhase,
     world: &World,
     view: &FrameView<'_>,
     threshold_deg: f64,
     screen: &mut Vec<[f64; 2]>,
+    meter: &mut Meter<'_>,
 ) {
     let viewer = view.viewer;
     screen.clear();
     screen.extend(world.position.iter().map(|&p| viewer.project(p)));
     let unit = view.model.unit;
-    for p in &mut np.pairs {
+    for (k, p) in np.pairs.iter_mut().enumerate() {
+        // Sphere-test budgets do not count this work (it tests no spheres), so pass 0 tests.
+        if k % 64 == 0 && meter.exhausted_by_clock() {
+            return;
+        }
         let (a, b) = (p.a as usize, p.b as usize);
         let centre = viewer.project((world.position[a] + world.position[b]) * 0.5);
         let e_deg = viewer.screen_distance(centre, view.fixation_px, EccentricityUnit::Degrees);

@@ -169,3 +169,44 @@ fn export_has_tree_bodies_and_exact_pairs() {
         Some(sim.candidate_pairs().len())
     );
 }
+
+/// A clock that advances 2 µs every time it is read.
+struct Ticking(std::cell::Cell<u64>);
+
+impl foveal_engine::Clock for Ticking {
+    fn now_ns(&self) -> u64 {
+        let t = self.0.get() + 2_000;
+        self.0.set(t);
+        t
+    }
+}
+
+#[test]
+fn wall_budget_smaller_than_prioritisation_is_held() {
+    // 10 µs of budget at 2 µs per clock read: the deadline passes during prioritisation, which
+    // must stop there (and the scheduler must then do no sphere test) instead of running over
+    // every candidate pair.
+    let mut cfg = config(
+        3000,
+        4,
+        BudgetSpec::WallMs(0.01),
+        SchedulerKind::PrioritySorted,
+    );
+    cfg.audit = false;
+    let mut sim = Simulation::new(cfg).expect("valid");
+    let clock = Ticking(std::cell::Cell::new(0));
+    let r = sim.step(Some(Fixation::at(0.5, 0.5)), &clock).clone();
+    assert!(r.budget_exhausted && r.deemed > 0);
+    // Integrate and broad phase read the clock 2 times before the deadline starts counting; the
+    // deadline is 5 reads later, each read covering at most 576 prioritised pairs or 9 steps.
+    let reads = clock.0.get() / 2_000;
+    assert!(reads < 40, "{reads} clock reads");
+    assert!(r.sphere_tests <= 8 * 6400, "{}", r.sphere_tests);
+    let reached = sim.pairs().iter().filter(|p| p.priority > 0.0).count();
+    assert!(
+        reached > 0 && reached <= 5 * 576,
+        "{reached} of {} pairs prioritised",
+        r.candidate_pairs
+    );
+    assert!(reached < r.candidate_pairs as usize);
+}
