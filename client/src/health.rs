@@ -9,7 +9,7 @@ use tonic_health::pb::health_client::HealthClient;
 
 pub use tonic_health::pb::health_check_response::ServingStatus;
 
-use crate::{ClientError, endpoint, normalise_addr};
+use crate::{ClientError, endpoint};
 
 /// The service name of the foveal service in the health registry; `""` asks about the server
 /// as a whole.
@@ -29,14 +29,7 @@ pub async fn check(
     service: &str,
     timeout: Duration,
 ) -> Result<ServingStatus, ClientError> {
-    let channel = endpoint(addr, timeout)?
-        .timeout(timeout)
-        .connect()
-        .await
-        .map_err(|source| ClientError::Connect {
-            addr: normalise_addr(addr),
-            source,
-        })?;
+    let channel = crate::open(addr, endpoint(addr, timeout)?.timeout(timeout)).await?;
     let request = HealthCheckRequest {
         service: service.to_owned(),
     };

@@ -131,19 +131,27 @@ pub fn endpoint(addr: &str, connect_timeout: Duration) -> Result<Endpoint, Clien
         .map_err(|source| ClientError::InvalidAddress { addr, source })
 }
 
+/// Opens `endpoint` (built for `addr`), naming `addr` in the error.
+pub(crate) async fn open(
+    addr: &str,
+    endpoint: tonic::transport::Endpoint,
+) -> Result<Channel, ClientError> {
+    endpoint
+        .connect()
+        .await
+        .map_err(|source| ClientError::Connect {
+            addr: normalise_addr(addr),
+            source,
+        })
+}
+
 /// Connects to the foveal server at `addr` (e.g. `http://127.0.0.1:50051`), waiting at most
 /// [`CONNECT_TIMEOUT`].
 ///
 /// # Errors
 /// [`ClientError::InvalidAddress`] or [`ClientError::Connect`].
 pub async fn connect(addr: &str) -> Result<FovealClient<Channel>, ClientError> {
-    let channel = endpoint(addr, CONNECT_TIMEOUT)?
-        .connect()
-        .await
-        .map_err(|source| ClientError::Connect {
-            addr: normalise_addr(addr),
-            source,
-        })?;
+    let channel = open(addr, endpoint(addr, CONNECT_TIMEOUT)?).await?;
     Ok(FovealClient::new(channel)
         .max_decoding_message_size(MAX_MESSAGE_BYTES)
         .max_encoding_message_size(MAX_MESSAGE_BYTES))
