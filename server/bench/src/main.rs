@@ -57,7 +57,7 @@ fn stress(args: &StressArgs) -> Result<()> {
 
 #[derive(Debug, Args)]
 struct StudyArgs {
-    /// Small protocol (N = paper values, 300 frames, 5 seeds; curves at N = 500, 100 frames).
+    /// Small protocol (N = paper values, 50 frames, 3 seeds; curves at N = 300, 30 frames): seconds.
     #[arg(long)]
     quick: bool,
     /// Run only the budget sweep (true P against budget per scheduler) instead of the table.
