@@ -192,23 +192,9 @@ pub struct ScriptedGaze {
     rate_hz: f64,
     start_s: f64,
     index: u64,
-    motion: Motion,
-}
-
-/// The script with its running state.
-#[derive(Debug, Clone)]
-enum Motion {
-    Fixed {
-        x: f64,
-        y: f64,
-    },
-    Circle {
-        cx: f64,
-        cy: f64,
-        radius: f64,
-        period_s: f64,
-    },
-    Saccades(SaccadeTimeline),
+    /// Running state of a saccade script, made on its first sample (fixed and circle scripts are
+    /// stateless).
+    timeline: Option<SaccadeTimeline>,
 }
 
 impl ScriptedGaze {
@@ -253,27 +239,12 @@ impl ScriptedGaze {
             }
             GazeScript::Saccades { .. } => {}
         }
-        let motion = match script {
-            GazeScript::Fixed { x, y } => Motion::Fixed { x, y },
-            GazeScript::Circle {
-                cx,
-                cy,
-                radius,
-                period_s,
-            } => Motion::Circle {
-                cx,
-                cy,
-                radius,
-                period_s,
-            },
-            GazeScript::Saccades { seed } => Motion::Saccades(SaccadeTimeline::new(seed)),
-        };
         Ok(Self {
             script,
             rate_hz,
             start_s: 0.0,
             index: 0,
-            motion,
+            timeline: None,
         })
     }
 
@@ -325,25 +296,28 @@ impl Iterator for ScriptedGaze {
         let elapsed_s = self.index as f64 / self.rate_hz;
         self.index += 1;
         let t_s = self.start_s + elapsed_s;
-        let sample = match &mut self.motion {
-            Motion::Fixed { x, y } => {
-                GazeSample::valid(t_s, *x, *y, Eye::Unspecified).with_fixation(Some(true))
+        let sample = match self.script {
+            GazeScript::Fixed { x, y } => {
+                GazeSample::valid(t_s, x, y, Eye::Unspecified).with_fixation(Some(true))
             }
-            Motion::Circle {
+            GazeScript::Circle {
                 cx,
                 cy,
                 radius,
                 period_s,
             } => {
-                let angle = TAU * (elapsed_s / *period_s).fract();
+                let angle = TAU * (elapsed_s / period_s).fract();
                 GazeSample::valid(
                     t_s,
-                    *cx + *radius * angle.cos(),
-                    *cy + *radius * angle.sin(),
+                    cx + radius * angle.cos(),
+                    cy + radius * angle.sin(),
                     Eye::Unspecified,
                 )
             }
-            Motion::Saccades(timeline) => {
+            GazeScript::Saccades { seed } => {
+                let timeline = self
+                    .timeline
+                    .get_or_insert_with(|| SaccadeTimeline::new(seed));
                 let ((x, y), fixation) = timeline.at(elapsed_s);
                 GazeSample::valid(t_s, x, y, Eye::Unspecified).with_fixation(Some(fixation))
             }
