@@ -190,7 +190,7 @@ pub fn exact_cost(cfg: &StudyConfig, spec: &RunSpec) -> Result<f64, BenchError> 
     for _ in 0..cfg.warmup_frames {
         sim.step(None, &FrozenClock);
     }
-    Ok(sim.exact_cost(cfg.calibration_frames))
+    Ok(sim.exact_cost(cfg.calibration_frames)?)
 }
 
 /// Run one simulation for `spec.frames` frames; write its frames to `frames_csv` if given.

@@ -30,6 +30,19 @@ pub enum FrameBudget {
     Deadline(u64),
     /// Stop once this many sphere tests have been done this frame.
     Tests(u64),
+    /// A wall-clock allowance per frame (ns), counted from the frame's start: the frame's meter
+    /// stops at start + allowance ([`Self::starting_at`]).
+    Wall(u64),
+}
+
+impl FrameBudget {
+    /// This budget for a frame that started at `start_ns`: an allowance becomes a deadline.
+    pub fn starting_at(self, start_ns: u64) -> Self {
+        match self {
+            Self::Wall(ns) => Self::Deadline(start_ns.saturating_add(ns)),
+            b => b,
+        }
+    }
 }
 
 /// How many steps go by between two clock reads: a read costs about as much as a small step, and a
@@ -56,6 +69,10 @@ impl std::fmt::Debug for Meter<'_> {
 impl<'c> Meter<'c> {
     /// A meter for one frame.
     pub fn new(budget: FrameBudget, clock: &'c dyn Clock) -> Self {
+        let budget = match budget {
+            FrameBudget::Wall(_) => budget.starting_at(clock.now_ns()),
+            b => b,
+        };
         Self {
             budget,
             clock,
@@ -73,7 +90,7 @@ impl<'c> Meter<'c> {
         self.exhausted = match self.budget {
             FrameBudget::Unlimited => false,
             FrameBudget::Tests(max) => tests >= max,
-            FrameBudget::Deadline(t) => {
+            FrameBudget::Deadline(t) | FrameBudget::Wall(t) => {
                 if self.countdown == 0 {
                     self.countdown = CLOCK_STRIDE;
                     self.clock.now_ns() >= t
@@ -91,7 +108,7 @@ impl<'c> Meter<'c> {
     #[inline]
     pub fn exhausted_by_clock(&mut self) -> bool {
         match self.budget {
-            FrameBudget::Deadline(_) => self.exhausted(0),
+            FrameBudget::Deadline(_) | FrameBudget::Wall(_) => self.exhausted(0),
             FrameBudget::Unlimited | FrameBudget::Tests(_) => false,
         }
     }

@@ -7,6 +7,8 @@
 use serde::{Deserialize, Serialize};
 
 use crate::perception::{CameraConfig, Display, PerceptualModel};
+pub use crate::validate::ConfigError;
+use crate::validate::{check_finite_positive, check_finite_range};
 
 /// Largest body count the engine accepts. Memory is about 200 bytes per body plus the pair lists;
 /// 2,000,000 bodies is roughly 1 GiB at the paper's density, the most a frame can touch usefully.
@@ -20,56 +22,8 @@ pub const MAX_DEPTH: usize = 6;
 /// of the default scene. Beyond that, integration itself degrades, so configs are refused.
 pub const MAX_ORIGIN: f64 = 1e9;
 
-/// A config field outside its allowed range.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("invalid config: `{field}` = {value}: {expected}")]
-pub struct ConfigError {
-    /// Dotted path of the offending field, e.g. `scene.shape_radius`.
-    pub field: &'static str,
-    /// The rejected value, rendered.
-    pub value: String,
-    /// What would have been accepted.
-    pub expected: String,
-}
-
-impl ConfigError {
-    pub(crate) fn new(
-        field: &'static str,
-        value: impl std::fmt::Display,
-        expected: impl Into<String>,
-    ) -> Self {
-        Self {
-            field,
-            value: value.to_string(),
-            expected: expected.into(),
-        }
-    }
-}
-
-pub(crate) fn check_finite_positive(field: &'static str, v: f64) -> Result<(), ConfigError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(())
-    } else {
-        Err(ConfigError::new(field, v, "must be finite and > 0"))
-    }
-}
-
-pub(crate) fn check_finite_range(
-    field: &'static str,
-    v: f64,
-    lo: f64,
-    hi: f64,
-) -> Result<(), ConfigError> {
-    if v.is_finite() && (lo..=hi).contains(&v) {
-        Ok(())
-    } else {
-        Err(ConfigError::new(
-            field,
-            v,
-            format!("must be finite and in [{lo}, {hi}]"),
-        ))
-    }
-}
+/// Most worker threads a simulation may use.
+pub const MAX_THREADS: u32 = 64;
 
 /// The scene: how many bodies, where, how fast (DESIGN.md "Scene").
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -214,17 +168,21 @@ pub enum SchedulerKind {
     PrioritySorted,
     /// Ours: greedy on expected perceived error removed per sphere test.
     ExpectedGain,
+    /// Ours: each step priced by the false-positive perceived error it is expected to remove per
+    /// sphere test, with probabilities and costs calibrated on exact runs of the paper scene.
+    Priced,
 }
 
 impl SchedulerKind {
     /// Every scheduler, in the order tables list them.
-    pub const ALL: [SchedulerKind; 6] = [
+    pub const ALL: [SchedulerKind; 7] = [
         Self::RoundRobin,
         Self::Sequential,
         Self::SortedSequential,
         Self::PriorityOnly,
         Self::PrioritySorted,
         Self::ExpectedGain,
+        Self::Priced,
     ];
 
     /// Stable short name (CLI flags, CSV columns).
@@ -236,6 +194,7 @@ impl SchedulerKind {
             Self::PriorityOnly => "priority-only",
             Self::PrioritySorted => "priority-sorted",
             Self::ExpectedGain => "expected-gain",
+            Self::Priced => "priced",
         }
     }
 
@@ -279,6 +238,11 @@ pub struct SimConfig {
     /// Frames the calibration copy runs first, uncounted: random placement starts the scene with
     /// deep overlaps that cost 2-4x the steady state for about a second of simulated time.
     pub calibration_warmup: u32,
+    /// Ablation switches of the priced scheduler (all on by default).
+    pub priced: crate::schedule::PricedOptions,
+    /// Worker threads the frame's phases may use (1..=64). Results do not depend on it: under a
+    /// sphere-test budget frame reports are bit-identical for every thread count.
+    pub threads: u32,
 }
 
 impl Default for SimConfig {
@@ -295,6 +259,8 @@ impl Default for SimConfig {
             camera: CameraConfig::default(),
             calibration_frames: 30,
             calibration_warmup: 60,
+            threads: 1,
+            priced: crate::schedule::PricedOptions::default(),
         }
     }
 }
@@ -319,6 +285,13 @@ impl SimConfig {
                 "calibration_warmup",
                 self.calibration_warmup,
                 "must be <= 100000",
+            ));
+        }
+        if !(1..=MAX_THREADS).contains(&self.threads) {
+            return Err(ConfigError::new(
+                "threads",
+                self.threads,
+                format!("must be in 1..={MAX_THREADS}"),
             ));
         }
         if matches!(self.budget, BudgetSpec::FractionOfExact(_)) && self.calibration_frames == 0 {

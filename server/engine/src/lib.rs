@@ -9,6 +9,7 @@
 //! # Layout
 //! - [`config`]: scene, budget, scheduler and model configuration, validated with errors that name
 //!   the field and the range.
+//! - [`validate`]: the field-naming [`ConfigError`] and range checks every config type uses.
 //! - [`shape`], [`sphere_tree`]: the star shape and its flat, level-ordered octree sphere tree.
 //! - [`world`]: body state and integration (walls reflect).
 //! - [`broad_phase`]: sweep and prune with temporal coherence.
@@ -16,6 +17,7 @@
 //! - [`budget`]: wall-clock and sphere-test budgets, the [`Clock`] trait.
 //! - [`schedule`]: round-robin, sequential, sorted, priority-queue and expected-gain schedulers.
 //! - [`perception`], [`fixation`]: camera, display, visual angle, F1/F2/F3.
+//! - [`falloff`]: the models' eccentricity fall-off tabulated for per-pair lookup without libm.
 //! - [`response`]: velocity exchange.
 //! - [`report`]: the frame record, the phase profile and the audit.
 //! - [`simulation`]: one frame of the main loop; [`export`]: a frame as JSON.
@@ -38,8 +40,10 @@
 
 pub mod broad_phase;
 pub mod budget;
+pub mod collider;
 pub mod config;
 pub mod export;
+pub mod falloff;
 pub mod fixation;
 pub mod math;
 pub mod narrow_phase;
@@ -52,6 +56,7 @@ pub mod shape;
 pub mod simulation;
 pub mod soak;
 pub mod sphere_tree;
+pub mod validate;
 pub mod world;
 
 pub use budget::{Clock, FrameBudget, FrozenClock};

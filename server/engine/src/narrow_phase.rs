@@ -110,10 +110,6 @@ pub struct PairState {
     pub resolved_level: u8,
     /// Last overlapping sphere pair found (A index, B index), for the gap estimate of section 3.
     pub last: [u16; 2],
-    /// Scheduling priority (perceptual importance; higher first).
-    pub priority: f32,
-    /// Inside the priority-queue eccentricity threshold.
-    pub inner: bool,
     list_start: u32,
     list_len: u32,
     frame: PairFrame,
@@ -128,14 +124,22 @@ impl PairState {
             levels: [0, 0],
             resolved_level: 0,
             last: [NONE, NONE],
-            priority: 0.0,
-            inner: false,
             list_start: 0,
             list_len: 0,
             frame: PairFrame {
                 m: LMat3::IDENTITY,
                 t: LVec3::ZERO,
             },
+        }
+    }
+
+    /// Steps taken so far: 0 untested, then one per level descended (`levels` summed, less one).
+    #[inline]
+    pub fn stage(&self) -> u8 {
+        if self.status == PairStatus::Untested {
+            0
+        } else {
+            (self.levels[0] + self.levels[1]).saturating_sub(1)
         }
     }
 
@@ -223,6 +227,16 @@ impl NarrowPhase {
                 };
             }
         }
+    }
+
+    /// Whether pair `i` has a witness from last frame: its first step re-tests the leaf pair that
+    /// proved a collision then, so the pair most likely collides again.
+    #[inline]
+    pub fn has_witness(&self, i: usize) -> bool {
+        let p = &self.pairs[i];
+        self.witness
+            .get(p.a as usize)
+            .is_some_and(|w| w.partner == p.b)
     }
 
     /// Advance pair `i` by one level of one tree. A pair that collided last frame first re-tests the

@@ -6,14 +6,16 @@ use crate::config::MAX_DEPTH;
 use crate::fixation::Fixation;
 
 /// Time spent in each phase of the frame, nanoseconds by the caller's clock (all 0 with a frozen
-/// clock). `collision` = broad + narrow + response is the paper's T.
+/// clock). `collision` = broad + prioritise + narrow + response is the paper's T.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct PhaseProfile {
     /// Integration of positions and orientations.
     pub integrate_ns: u64,
     /// Broad phase (sweep and prune, candidate list).
     pub broad_ns: u64,
-    /// Narrow phase including prioritisation and scheduling.
+    /// Prioritisation of the candidate pairs (projection, eccentricity, weights).
+    pub prioritise_ns: u64,
+    /// Narrow phase: scheduling and sphere tests, interruption.
     pub narrow_ns: u64,
     /// Collision response.
     pub response_ns: u64,
@@ -22,9 +24,15 @@ pub struct PhaseProfile {
 }
 
 impl PhaseProfile {
-    /// T: collision-handling time (broad + narrow + response), as the paper measures it.
+    /// T: collision-handling time (broad + prioritise + narrow + response), as the paper
+    /// measures it.
     pub fn collision_ns(&self) -> u64 {
-        self.broad_ns + self.narrow_ns + self.response_ns
+        self.broad_ns + self.prioritise_ns + self.narrow_ns + self.response_ns
+    }
+
+    /// The whole step: every phase, metrics included.
+    pub fn step_ns(&self) -> u64 {
+        self.integrate_ns + self.collision_ns() + self.measure_ns
     }
 }
 
@@ -40,6 +48,10 @@ pub struct AuditReport {
     /// True P with the measuring model (None without a fixation).
     pub perceived_inaccuracy: Option<f64>,
 }
+
+/// Eccentricity (degrees of visual angle) within which a frame counts its pairs as foveal: the
+/// fovea and parafovea, where the paper's model weighs errors most.
+pub const FOVEAL_DEG: f64 = 5.0;
 
 /// One frame's record.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
@@ -68,6 +80,10 @@ pub struct FrameReport {
     pub resolved_per_level: [u32; MAX_DEPTH],
     /// Sphere tests done by the narrow phase.
     pub sphere_tests: u64,
+    /// Candidate pairs whose centre lies within [`FOVEAL_DEG`] of the fixation (0 without one).
+    pub foveal_pairs: u32,
+    /// Of those, pairs deemed at interruption rather than settled exactly.
+    pub foveal_deemed: u32,
     /// The budget ran out before every pair was resolved.
     pub budget_exhausted: bool,
     /// Per-phase timings.

@@ -15,7 +15,8 @@
 use glam::Vec4;
 use serde::Serialize;
 
-use crate::config::{ConfigError, MAX_DEPTH};
+use crate::config::MAX_DEPTH;
+use crate::validate::ConfigError;
 use crate::math::{LVec3, Vec3};
 use crate::shape::Star;
 

@@ -68,9 +68,9 @@ impl Scheduler for ExpectedGain {
             return round_robin(np, &mut self.fallback, work, meter);
         };
         self.heap.clear();
-        for (i, p) in np.pairs.iter().enumerate() {
+        for (i, &w) in work.priorities.weight.iter().enumerate() {
             self.heap.push(Entry {
-                gain: p.priority / price(np, i),
+                gain: w / price(np, i),
                 pair: i as u32,
             });
         }
@@ -81,7 +81,6 @@ impl Scheduler for ExpectedGain {
             let i = pair as usize;
             if np.step(i, work.tree, work.world) == StepOutcome::Active {
                 let w = view.weight(&np.evidence(i, work.tree, work.world)) as f32;
-                np.pairs[i].priority = w;
                 self.heap.push(Entry {
                     gain: w / price(np, i),
                     pair,

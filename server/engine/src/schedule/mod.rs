@@ -4,12 +4,18 @@
 //! [`NarrowPhase`] and [`Meter`]. Adding a scheduler is one file implementing [`Scheduler`] plus a
 //! line in [`for_kind`]. Pairs left open when a scheduler returns are deemed colliding by the caller.
 
+pub mod calibration;
+mod calibration_table;
 mod expected_gain;
+pub mod priced;
+pub mod priority;
 mod priority_queue;
 mod round_robin;
 mod sequential;
 
 pub use expected_gain::ExpectedGain;
+pub use priced::{Priced, PricedOptions};
+pub use priority::{Prioritiser, Priorities};
 pub use priority_queue::PriorityQueue;
 pub use round_robin::RoundRobin;
 pub use sequential::Sequential;
@@ -28,9 +34,12 @@ pub struct Work<'a> {
     pub tree: &'a SphereTree,
     /// Body state.
     pub world: &'a World,
-    /// Screen, fixation and scheduling model, when the scheduler needs priorities. Pair priorities
-    /// and inner-queue flags are already filled in when this is `Some`.
+    /// Screen, fixation and scheduling model, when there is a fixation and the scheduler uses it.
     pub view: Option<&'a FrameView<'a>>,
+    /// Per-pair priorities, filled in before the scheduler runs (see [`priority`]).
+    pub priorities: &'a Priorities,
+    /// Calibrated state prices (see [`calibration`]).
+    pub calibration: &'a calibration::Calibration,
 }
 
 /// A narrow-phase scheduling strategy.
@@ -41,8 +50,8 @@ pub trait Scheduler: std::fmt::Debug + Send {
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>);
 }
 
-/// The scheduler for `kind`.
-pub fn for_kind(kind: SchedulerKind) -> Box<dyn Scheduler> {
+/// The scheduler for `kind` (`options` configure [`Priced`] only).
+pub fn for_kind(kind: SchedulerKind, options: PricedOptions) -> Box<dyn Scheduler> {
     match kind {
         SchedulerKind::RoundRobin => Box::new(RoundRobin::default()),
         SchedulerKind::Sequential => Box::new(Sequential::new(false)),
@@ -50,6 +59,7 @@ pub fn for_kind(kind: SchedulerKind) -> Box<dyn Scheduler> {
         SchedulerKind::PriorityOnly => Box::new(PriorityQueue::new(false)),
         SchedulerKind::PrioritySorted => Box::new(PriorityQueue::new(true)),
         SchedulerKind::ExpectedGain => Box::new(ExpectedGain::default()),
+        SchedulerKind::Priced => Box::new(Priced::new(options)),
     }
 }
 
@@ -95,11 +105,10 @@ pub(crate) fn sequential(
 }
 
 /// Sort pair indices by priority, highest first; ties keep broad-phase order (deterministic).
-pub(crate) fn sort_by_priority(np: &NarrowPhase, queue: &mut [u32]) {
+pub(crate) fn sort_by_priority(weight: &[f32], queue: &mut [u32]) {
     queue.sort_by(|&x, &y| {
-        np.pairs[y as usize]
-            .priority
-            .total_cmp(&np.pairs[x as usize].priority)
+        weight[y as usize]
+            .total_cmp(&weight[x as usize])
             .then(x.cmp(&y))
     });
 }

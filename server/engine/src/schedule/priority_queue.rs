@@ -39,15 +39,15 @@ impl Scheduler for PriorityQueue {
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
         self.inner.clear();
         self.outer.clear();
-        for (i, p) in np.pairs.iter().enumerate() {
-            if p.inner {
+        for (i, &inner) in work.priorities.inner.iter().enumerate() {
+            if inner {
                 self.inner.push(i as u32)
             } else {
                 self.outer.push(i as u32)
             }
         }
         if self.sorted {
-            sort_by_priority(np, &mut self.inner);
+            sort_by_priority(&work.priorities.weight, &mut self.inner);
             sequential(np, &self.inner, work, meter);
         } else {
             round_robin(np, &mut self.inner, work, meter);

@@ -1,0 +1,296 @@
+//! The collision-handling part of a frame on poses handed in: prioritisation, the budgeted narrow
+//! phase, interruption, metrics (section 3) and the audit.
+//!
+//! [`crate::Simulation`] runs it inside its closed loop, after integration and the broad phase.
+//! The open-loop protocol (DESIGN.md) runs it on frames someone else produced: one exact run gives
+//! the poses and candidate pairs, and every scheduler and budget is evaluated on exactly those, so
+//! a comparison of schedulers is not confounded by the different physics each would cause. A
+//! collider keeps only what a scheduler legitimately carries between frames (the narrow phase's
+//! witnesses and its buffers).
+
+use crate::budget::{Clock, FrameBudget, Meter};
+use crate::config::SimConfig;
+use crate::fixation::{Fixation, FrameView};
+use crate::narrow_phase::{NarrowPhase, PairState, PairStatus, separation};
+use crate::perception::Viewer;
+use crate::report::{AuditReport, FOVEAL_DEG, FrameReport, PhaseProfile};
+use crate::schedule::calibration::Calibration;
+use crate::schedule::{self, Prioritiser, Priorities, Scheduler, Work};
+use crate::sphere_tree::SphereTree;
+use crate::validate::ConfigError;
+use crate::world::World;
+
+/// One frame's poses and candidates, as the collider sees them.
+#[derive(Debug, Clone, Copy)]
+pub struct FrameInput<'a> {
+    /// The shared sphere tree.
+    pub tree: &'a SphereTree,
+    /// Body state (positions and bases of this frame).
+    pub world: &'a World,
+    /// Candidate pairs of the broad phase.
+    pub candidates: &'a [(u32, u32)],
+    /// Camera and display.
+    pub viewer: &'a Viewer,
+}
+
+/// Prioritisation, scheduling, interruption, metrics and audit for one configuration.
+#[derive(Debug)]
+pub struct Collider {
+    config: SimConfig,
+    scheduler: Box<dyn Scheduler>,
+    prioritiser: Prioritiser,
+    foveal: Prioritiser,
+    calibration: Calibration,
+    narrow: NarrowPhase,
+    priorities: Priorities,
+    foveal_flags: Priorities,
+    audit_stack: Vec<(f32, u16, u16, u8, u8)>,
+}
+
+impl Collider {
+    /// A collider for `config` (its scheduler, models, threshold and audit switch; the budget is
+    /// handed to each call) over `tree` and `viewer`.
+    pub fn new(config: &SimConfig, tree: &SphereTree, viewer: &Viewer) -> Result<Self, ConfigError> {
+        config.validate()?;
+        let r = tree.root_radius();
+        Ok(Self {
+            scheduler: schedule::for_kind(config.scheduler, config.priced),
+            prioritiser: Prioritiser::new(
+                viewer,
+                &config.schedule_model,
+                config.eccentricity_threshold_deg,
+                r,
+            ),
+            foveal: Prioritiser::new(viewer, &config.measure_model, FOVEAL_DEG, r),
+            calibration: if config.scheduler == crate::config::SchedulerKind::Priced {
+                Calibration::for_tree(tree, &config.scene)?
+            } else {
+                Calibration::uninformed(tree.depth() as u8)
+            },
+            narrow: NarrowPhase::default(),
+            priorities: Priorities::default(),
+            foveal_flags: Priorities::default(),
+            audit_stack: Vec::new(),
+            config: config.clone(),
+        })
+    }
+
+    /// Pair states of the last frame.
+    pub fn pairs(&self) -> &[PairState] {
+        &self.narrow.pairs
+    }
+
+    /// What prioritisation computed for the last frame's pairs.
+    pub fn priorities(&self) -> &Priorities {
+        &self.priorities
+    }
+
+    /// The narrow phase (pair states and test count) of the last frame.
+    pub fn narrow(&self) -> &NarrowPhase {
+        &self.narrow
+    }
+
+    /// Whether the scheduler prioritises, given whether there is a fixation.
+    fn prioritises(&self, has_fixation: bool) -> bool {
+        use crate::config::SchedulerKind;
+        match self.config.scheduler {
+            // Needs distances and scales even without a fixation.
+            SchedulerKind::Priced => true,
+            k => has_fixation && k.needs_priority(),
+        }
+    }
+
+    /// Prioritise and run the narrow phase on `input` under `budget`, deem what is left open, and
+    /// remember this frame's witnesses. Fills the counts of `r` and the prioritise and narrow
+    /// timings of `profile`. The meter runs from `meter_start` on: the caller decides whether
+    /// earlier phases of the frame spend the same budget.
+    #[allow(clippy::too_many_arguments)]
+    pub fn collide(
+        &mut self,
+        input: &FrameInput<'_>,
+        fixation: Option<Fixation>,
+        budget: FrameBudget,
+        clock: &dyn Clock,
+        r: &mut FrameReport,
+        profile: &mut PhaseProfile,
+    ) {
+        let t0 = clock.now_ns();
+        self.narrow.reset(input.candidates);
+        let fixation_px = fixation.map(|f| {
+            let f = f.clamped();
+            input.viewer.to_pixels(f.x, f.y)
+        });
+        let mut meter = Meter::new(budget, clock);
+        let prioritised = self.prioritises(fixation_px.is_some());
+        if prioritised {
+            self.prioritiser.prioritise(
+                &self.narrow.pairs,
+                input.world,
+                input.viewer,
+                fixation_px,
+                &mut self.priorities,
+                &mut meter,
+            );
+        } else {
+            self.priorities.clear(self.narrow.pairs.len());
+        }
+        let t1 = clock.now_ns();
+        let view = fixation_px.map(|px| FrameView {
+            viewer: input.viewer,
+            fixation_px: px,
+            model: self.config.schedule_model,
+        });
+        let work = Work {
+            tree: input.tree,
+            world: input.world,
+            view: view.as_ref().filter(|_| prioritised),
+            priorities: &self.priorities,
+            calibration: &self.calibration,
+        };
+        self.scheduler.run(&mut self.narrow, &work, &mut meter);
+        let deemed = self.narrow.deem_open();
+        self.narrow.remember_witnesses(input.world.len());
+        let t2 = clock.now_ns();
+        profile.prioritise_ns = t1 - t0;
+        profile.narrow_ns = t2 - t1;
+        r.candidate_pairs = self.narrow.pairs.len() as u32;
+        r.deemed = deemed;
+        r.sphere_tests = self.narrow.tests;
+        r.budget_exhausted = meter.was_exhausted();
+    }
+
+    /// Counts per level, Δ and P (section 3) from the pair states; the foveal counts; and, in audit
+    /// mode, the exact answer for every deemed pair.
+    pub fn measure(&mut self, input: &FrameInput<'_>, fixation: Option<Fixation>, r: &mut FrameReport) {
+        let fixation_px = fixation.map(|f| {
+            let f = f.clamped();
+            input.viewer.to_pixels(f.x, f.y)
+        });
+        let view = fixation_px.map(|px| FrameView {
+            viewer: input.viewer,
+            fixation_px: px,
+            model: self.config.measure_model,
+        });
+        let (tree, world) = (input.tree, input.world);
+        let mut delta = 0.0;
+        let mut p_sum = 0.0;
+        for (i, p) in self.narrow.pairs.iter().enumerate() {
+            match p.status {
+                PairStatus::Colliding => r.real_collisions += 1,
+                PairStatus::Deemed => {
+                    let ev = self.narrow.evidence(i, tree, world);
+                    delta += ev.gap;
+                    if let Some(v) = &view {
+                        p_sum += v.weight(&ev);
+                    }
+                }
+                _ => {}
+            }
+            if p.resolved_level > 0 {
+                r.resolved_per_level[p.resolved_level as usize - 1] += 1;
+            }
+        }
+        r.geometric_inaccuracy = delta;
+        r.perceived_inaccuracy = view.map(|_| p_sum);
+        if let Some(px) = fixation_px {
+            let mut unmetered = Meter::new(FrameBudget::Unlimited, &crate::FrozenClock);
+            self.foveal.prioritise(
+                &self.narrow.pairs,
+                world,
+                input.viewer,
+                Some(px),
+                &mut self.foveal_flags,
+                &mut unmetered,
+            );
+            for (p, &inner) in self.narrow.pairs.iter().zip(&self.foveal_flags.inner) {
+                r.foveal_pairs += u32::from(inner);
+                r.foveal_deemed += u32::from(inner && p.status == PairStatus::Deemed);
+            }
+        }
+        if self.config.audit {
+            r.audit = Some(audit(
+                &self.narrow,
+                tree,
+                world,
+                view.as_ref(),
+                &mut self.audit_stack,
+            ));
+        }
+    }
+
+    /// One open-loop frame: collide and measure `input` under `budget`, as a report (integration,
+    /// broad phase and response are not this collider's: their timings stay 0).
+    pub fn evaluate(
+        &mut self,
+        input: &FrameInput<'_>,
+        fixation: Option<Fixation>,
+        budget: FrameBudget,
+        clock: &dyn Clock,
+    ) -> FrameReport {
+        let fixation_rejected = fixation.is_some_and(|f| !f.is_usable());
+        let fixation = fixation.filter(Fixation::is_usable);
+        let mut r = FrameReport {
+            fixation,
+            fixation_rejected,
+            ..FrameReport::default()
+        };
+        let mut profile = PhaseProfile::default();
+        self.collide(input, fixation, budget, clock, &mut r, &mut profile);
+        let t = clock.now_ns();
+        self.measure(input, fixation, &mut r);
+        profile.measure_ns = clock.now_ns() - t;
+        r.profile = profile;
+        r
+    }
+}
+
+/// The exact answer for every deemed pair: whether it collides, and for those that do not, the
+/// true gap (separation of the leaf-sphere sets) and its perceived weight at the closest points.
+fn audit(
+    np: &NarrowPhase,
+    tree: &SphereTree,
+    world: &World,
+    view: Option<&FrameView<'_>>,
+    stack: &mut Vec<(f32, u16, u16, u8, u8)>,
+) -> AuditReport {
+    let mut a = AuditReport::default();
+    let mut p_sum = 0.0;
+    for p in np.pairs.iter().filter(|p| p.status == PairStatus::Deemed) {
+        match true_weight(tree, world, p.a as usize, p.b as usize, view, stack) {
+            None => a.true_positives += 1,
+            Some((sep, w)) => {
+                a.false_positives += 1;
+                a.geometric_inaccuracy += sep;
+                p_sum += w;
+            }
+        }
+    }
+    a.perceived_inaccuracy = view.map(|_| p_sum);
+    a
+}
+
+/// The truth of a pair: None if it collides, else its separation and the perceived error of that
+/// true gap (0 without a view), the two closest leaf spheres' facing points taken as the gap.
+pub fn true_weight(
+    tree: &SphereTree,
+    world: &World,
+    a: usize,
+    b: usize,
+    view: Option<&FrameView<'_>>,
+    stack: &mut Vec<(f32, u16, u16, u8, u8)>,
+) -> Option<(f64, f64)> {
+    let (sep, ca, cb) = separation(tree, world, a, b, stack);
+    if sep <= 0.0 {
+        return None;
+    }
+    let w = view.map_or(0.0, |v| {
+        // Closest points of the two leaf spheres lie on their centre line; all leaves share one
+        // radius, (d - sep) / 2.
+        let u = (cb - ca).normalize_or_zero();
+        let d = (cb - ca).length();
+        let gap_a = ca + u * (0.5 * (d - sep));
+        let gap_b = gap_a + u * sep;
+        v.weight_points(gap_a, gap_b, (gap_a + gap_b) * 0.5)
+    });
+    Some((sep, w))
+}

@@ -1,0 +1,427 @@
+//! What a pair's traversal state says about it: the probability that it is truly *not* colliding,
+//! the true gap it has if so, and the sphere tests still needed to settle it, measured on exact runs
+//! of the paper scene (DESIGN.md "Scene") and shipped as a small table.
+//!
+//! These are the prices of the [`super::Priced`] scheduler. Deeming a pair that truly collides costs
+//! nothing perceptually (section 3: the error is the gap left by a *non*-collision), so the value of
+//! working on a pair is the false-positive error it is expected to remove, and its price the tests
+//! it is expected to take. Both depend strongly on where the pair stands: about half of all
+//! candidate pairs are settled separate by the one root test, pairs whose centres are close almost
+//! always collide, and a pair whose overlap list has grown long is expensive to finish.
+//!
+//! A state is keyed by the stage of the traversal (0 untested, then one per level descended), the
+//! length of the overlap list (log2 buckets; for untested pairs, whether last frame's witness leaf
+//! pair will be re-tested), and the centre distance over the root diameter (16 buckets). Sparse bins
+//! are shrunk towards the pooled estimate of their (stage, list) row and that towards the stage, so
+//! every bin has a usable value. Keys are scale-free (distances over the root diameter, gaps over the
+//! shape radius), so the table holds for any shape radius; it is tied to the tree depth, and a
+//! simulation with another depth calibrates its own table at start-up on a small copy of its scene.
+//!
+//! `foveal-bench calibrate` regenerates the shipped table and reports its reliability on held-out
+//! seeds.
+
+use serde::Serialize;
+
+use crate::config::SceneConfig;
+use crate::narrow_phase::{NarrowPhase, StepOutcome, separation};
+use crate::shape::Star;
+use crate::sphere_tree::SphereTree;
+use crate::validate::ConfigError;
+use crate::{BudgetSpec, FrozenClock, SchedulerKind, SimConfig, Simulation};
+
+/// Centre-distance buckets (over the root diameter) per state.
+pub const DIST_BUCKETS: usize = 16;
+/// Centre distance / root diameter covered by the buckets; candidate pairs reach sqrt(3).
+const DIST_RANGE: f32 = 2.0;
+/// Overlap-list buckets (log2 of the list length, capped).
+pub const LIST_BUCKETS: usize = 8;
+/// Pseudo-count of the shrinkage towards the pooled estimate, for bins with fewer than
+/// [`DENSE`] observations; denser bins stand on their own (a pooled cost can be 40 tests where
+/// the bin's own is exactly 1).
+const SHRINK: f64 = 20.0;
+/// Observations from which a bin's own frequencies are used unshrunk.
+const DENSE: f64 = 100.0;
+
+/// One state's calibrated values.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Bin {
+    /// Probability that a pair in this state is truly not colliding.
+    pub p_separate: f32,
+    /// Mean true gap (leaf-sphere separation, over the shape radius) of such pairs that are not.
+    pub gap: f32,
+    /// Mean sphere tests from this state until the pair is settled.
+    pub cost: f32,
+    /// Observations behind the bin before shrinkage.
+    pub count: u32,
+}
+
+/// Calibrated values for every state of one tree depth.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Calibration {
+    depth: u8,
+    bins: Vec<Bin>,
+}
+
+/// Number of open stages of a depth-`depth` traversal: untested (0), then one per level
+/// descended up to `2 * depth - 2`, the last one before both trees are at their leaves.
+fn stages(depth: u8) -> usize {
+    2 * depth as usize - 1
+}
+
+/// Bin index of a state.
+#[inline]
+fn index(stage: u8, list_key: usize, dist: f32) -> usize {
+    let d = ((dist.max(0.0) * (DIST_BUCKETS as f32 / DIST_RANGE)) as usize).min(DIST_BUCKETS - 1);
+    (stage as usize * LIST_BUCKETS + list_key) * DIST_BUCKETS + d
+}
+
+/// The list key of pair `i`: witness flag when untested, else log2 of its overlap list.
+#[inline]
+fn list_key(np: &NarrowPhase, i: usize) -> usize {
+    let p = &np.pairs[i];
+    if p.stage() == 0 {
+        usize::from(np.has_witness(i))
+    } else {
+        (p.pending().max(1).ilog2() as usize).min(LIST_BUCKETS - 1)
+    }
+}
+
+impl Calibration {
+    /// The shipped table for the paper's depth, or a table calibrated now for another depth.
+    pub fn for_tree(tree: &SphereTree, scene: &SceneConfig) -> Result<Self, ConfigError> {
+        let depth = tree.depth() as u8;
+        if let Some(shipped) = Self::shipped().filter(|c| c.depth == depth) {
+            return Ok(shipped);
+        }
+        let mut small = SceneConfig::paper(2_000, 1);
+        small.depth = scene.depth;
+        small.shape_radius = scene.shape_radius;
+        Ok(Observations::record(&[small], 30, 20)?.calibration())
+    }
+
+    /// A flat table that knows nothing (every state equally likely to collide, equally costly):
+    /// for schedulers that do not price their steps.
+    pub fn uninformed(depth: u8) -> Self {
+        let bin = Bin {
+            p_separate: 0.5,
+            gap: 0.1,
+            cost: 8.0,
+            count: 0,
+        };
+        Self {
+            depth,
+            bins: vec![bin; stages(depth.max(1)) * LIST_BUCKETS * DIST_BUCKETS],
+        }
+    }
+
+    /// The table shipped with the engine (depth [`super::calibration_table::DEPTH`]).
+    pub fn shipped() -> Option<Self> {
+        let t = super::calibration_table::BINS;
+        let depth = super::calibration_table::DEPTH;
+        (t.len() == stages(depth) * LIST_BUCKETS * DIST_BUCKETS).then(|| Self {
+            depth,
+            bins: t
+                .iter()
+                .map(|&(p_separate, gap, cost, count)| Bin {
+                    p_separate,
+                    gap,
+                    cost,
+                    count,
+                })
+                .collect(),
+        })
+    }
+
+    /// Tree depth the table is for.
+    pub fn depth(&self) -> u8 {
+        self.depth
+    }
+
+    /// Every bin, in index order.
+    pub fn bins(&self) -> &[Bin] {
+        &self.bins
+    }
+
+    /// The calibrated values for pair `i` of `np`, whose centre distance over the root diameter is
+    /// `dist`.
+    #[inline]
+    pub fn lookup(&self, np: &NarrowPhase, i: usize, dist: f32) -> &Bin {
+        let stage = np.pairs[i].stage().min(stages(self.depth) as u8 - 1);
+        &self.bins[index(stage, list_key(np, i), dist)]
+    }
+
+    /// The table as Rust source for `schedule/calibration_table.rs`.
+    pub fn to_rust_source(&self, command: &str) -> String {
+        use std::fmt::Write as _;
+        let mut s = format!(
+            "//! Calibrated prices of the priced scheduler (see `calibration.rs`), generated by\n\
+             //! `{command}`; do not edit by hand.\n\
+             //! Each entry: (P(not colliding), mean true gap / R if not, mean tests to settle, count).\n\n\
+             /// Tree depth the table is for.\n\
+             pub(super) const DEPTH: u8 = {};\n\n\
+             /// Bins in index order: stage, list key, distance bucket.\n\
+             #[rustfmt::skip]\n\
+             pub(super) const BINS: &[(f32, f32, f32, u32)] = &[\n",
+            self.depth
+        );
+        for b in &self.bins {
+            let _ = writeln!(
+                s,
+                "    ({:?}, {:?}, {:?}, {}),",
+                b.p_separate, b.gap, b.cost, b.count
+            );
+        }
+        s.push_str("];\n");
+        s
+    }
+}
+
+/// Running sums per bin.
+#[derive(Debug, Clone, Copy, Default)]
+struct Sums {
+    n: f64,
+    separate: f64,
+    gap: f64,
+    cost: f64,
+}
+
+impl Sums {
+    fn add(&mut self, o: &Sums) {
+        self.n += o.n;
+        self.separate += o.separate;
+        self.gap += o.gap;
+        self.cost += o.cost;
+    }
+}
+
+/// Every visited state of exact runs, with what followed from it.
+#[derive(Debug, Clone)]
+pub struct Observations {
+    depth: u8,
+    sums: Vec<Sums>,
+}
+
+/// One row of a reliability table: states whose predicted probability of not colliding falls in
+/// `[lo, hi)`, and how often such pairs truly did not collide.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ReliabilityRow {
+    /// Lower edge of the predicted-probability bin.
+    pub lo: f64,
+    /// Upper edge.
+    pub hi: f64,
+    /// Mean predicted probability of the states in the bin (weighted by visits).
+    pub predicted: f64,
+    /// Observed frequency of "not colliding" among those visits.
+    pub observed: f64,
+    /// Visits.
+    pub count: f64,
+}
+
+impl Observations {
+    /// Run each scene exactly for `warmup` unrecorded and `frames` recorded frames and record, for
+    /// every candidate pair, each state its traversal passes through, whether it turned out to
+    /// collide, its true gap if not, and the tests it took from that state.
+    pub fn record(scenes: &[SceneConfig], warmup: u32, frames: u32) -> Result<Self, ConfigError> {
+        let depth = scenes.first().map_or(4, |s| s.depth) as u8;
+        let mut obs = Self {
+            depth,
+            sums: vec![Sums::default(); stages(depth) * LIST_BUCKETS * DIST_BUCKETS],
+        };
+        for scene in scenes {
+            if scene.depth as u8 != depth {
+                return Err(ConfigError::new(
+                    "scene.depth",
+                    scene.depth,
+                    format!("every calibration scene must have depth {depth}"),
+                ));
+            }
+            let cfg = SimConfig {
+                scene: scene.clone(),
+                budget: BudgetSpec::Exact,
+                scheduler: SchedulerKind::Sequential,
+                ..SimConfig::default()
+            };
+            let mut sim = Simulation::new(cfg)?;
+            let tree = SphereTree::build(Star::new(scene.shape_radius), scene.depth as usize)?;
+            let inv_diameter = (0.5 / tree.root_radius()) as f32;
+            let inv_r = 1.0 / scene.shape_radius;
+            let mut np = NarrowPhase::default();
+            let mut stack = Vec::new();
+            let mut visits: Vec<(usize, u64)> = Vec::new();
+            for f in 0..warmup + frames {
+                sim.step(None, &FrozenClock);
+                let world = sim.world();
+                np.reset(sim.candidate_pairs());
+                for i in 0..np.pairs.len() {
+                    let (a, b) = (np.pairs[i].a as usize, np.pairs[i].b as usize);
+                    let dist = (world.position[b] - world.position[a]).length() as f32 * inv_diameter;
+                    visits.clear();
+                    let outcome = loop {
+                        let stage = np.pairs[i].stage();
+                        visits.push((index(stage, list_key(&np, i), dist), np.tests));
+                        match np.step(i, &tree, world) {
+                            StepOutcome::Active => continue,
+                            o => break o,
+                        }
+                    };
+                    if f < warmup {
+                        continue;
+                    }
+                    let separate = outcome == StepOutcome::Separate;
+                    let gap = if separate {
+                        separation(&tree, world, a, b, &mut stack).0.max(0.0) * inv_r
+                    } else {
+                        0.0
+                    };
+                    for &(k, t0) in &visits {
+                        let s = &mut obs.sums[k];
+                        s.n += 1.0;
+                        s.separate += f64::from(u8::from(separate));
+                        s.gap += gap;
+                        s.cost += (np.tests - t0) as f64;
+                    }
+                }
+                np.remember_witnesses(world.len());
+            }
+        }
+        Ok(obs)
+    }
+
+    /// The calibrated table: each bin's frequencies shrunk towards its (stage, list) row, and the
+    /// row towards its stage.
+    pub fn calibration(&self) -> Calibration {
+        let per_row = DIST_BUCKETS;
+        let per_stage = LIST_BUCKETS * DIST_BUCKETS;
+        let n_stages = stages(self.depth);
+        let mut stage_sums = vec![Sums::default(); n_stages];
+        let mut row_sums = vec![Sums::default(); n_stages * LIST_BUCKETS];
+        for (k, s) in self.sums.iter().enumerate() {
+            stage_sums[k / per_stage].add(s);
+            row_sums[k / per_row].add(s);
+        }
+        // (p, gap, cost) of a pool, shrunk towards a parent's.
+        let shrink = |s: &Sums, parent: (f64, f64, f64)| {
+            let k = if s.n < DENSE { SHRINK } else { 0.0 };
+            let p = (s.separate + k * parent.0) / (s.n + k);
+            let gap = (s.gap + k * parent.0 * parent.1) / (s.separate + k * parent.0);
+            let cost = (s.cost + k * parent.2) / (s.n + k);
+            (p, if gap.is_finite() { gap } else { parent.1 }, cost)
+        };
+        let bins = self
+            .sums
+            .iter()
+            .enumerate()
+            .map(|(k, s)| {
+                let st = shrink(&stage_sums[k / per_stage], (0.5, 0.1, 8.0));
+                let row = shrink(&row_sums[k / per_row], st);
+                // A sparse bin borrows from its nearest distance buckets in the same row first
+                // (the prices change smoothly with distance), widening until the window is dense.
+                let base = k - k % per_row;
+                let d = k % per_row;
+                let mut window = *s;
+                let mut w = 0;
+                while window.n < DENSE && w < per_row {
+                    w += 1;
+                    window = Sums::default();
+                    for j in d.saturating_sub(w)..=(d + w).min(per_row - 1) {
+                        window.add(&self.sums[base + j]);
+                    }
+                }
+                let near = shrink(&window, row);
+                let (p, gap, cost) = shrink(s, near);
+                Bin {
+                    p_separate: p as f32,
+                    gap: gap as f32,
+                    cost: cost.max(1.0) as f32,
+                    count: s.n as u32,
+                }
+            })
+            .collect();
+        Calibration {
+            depth: self.depth,
+            bins,
+        }
+    }
+
+    /// Reliability of `cal` on these observations: visits grouped by predicted probability of not
+    /// colliding into `groups` equal-width bins, with the observed frequency in each, plus the
+    /// Brier score and the expected calibration error (visit-weighted mean |predicted - observed|).
+    pub fn reliability(&self, cal: &Calibration, groups: usize) -> (Vec<ReliabilityRow>, f64, f64) {
+        let groups = groups.max(1);
+        let mut rows: Vec<ReliabilityRow> = (0..groups)
+            .map(|g| ReliabilityRow {
+                lo: g as f64 / groups as f64,
+                hi: (g + 1) as f64 / groups as f64,
+                predicted: 0.0,
+                observed: 0.0,
+                count: 0.0,
+            })
+            .collect();
+        let (mut brier, mut n) = (0.0, 0.0);
+        for (s, b) in self.sums.iter().zip(&cal.bins) {
+            if s.n == 0.0 {
+                continue;
+            }
+            let p = f64::from(b.p_separate);
+            let g = ((p * groups as f64) as usize).min(groups - 1);
+            let r = &mut rows[g];
+            r.predicted += p * s.n;
+            r.observed += s.separate;
+            r.count += s.n;
+            // Sum over visits of (p - y)^2, y = 1 for the separate ones.
+            brier += s.separate * (1.0 - p).powi(2) + (s.n - s.separate) * p * p;
+            n += s.n;
+        }
+        let mut ece = 0.0;
+        for r in &mut rows {
+            if r.count > 0.0 {
+                r.predicted /= r.count;
+                r.observed /= r.count;
+                ece += r.count * (r.predicted - r.observed).abs();
+            }
+        }
+        let n = n.max(1.0);
+        (rows, brier / n, ece / n)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn states_predict_what_follows_them_and_the_table_is_dense() {
+        let scene = SceneConfig::paper(400, 3);
+        let obs = Observations::record(&[scene], 20, 5).expect("valid");
+        let cal = obs.calibration();
+        assert_eq!(cal.bins().len(), 7 * LIST_BUCKETS * DIST_BUCKETS);
+        for b in cal.bins() {
+            assert!((0.0..=1.0).contains(&b.p_separate) && b.cost >= 1.0 && b.gap >= 0.0);
+        }
+        // Untested pairs whose root spheres cannot touch (distance over the diameter > 1) are
+        // settled separate by their one root test.
+        let far = &cal.bins[index(0, 0, 1.3)];
+        assert!(far.count > 0 && far.p_separate > 0.9 && far.cost < 1.5, "{far:?}");
+        // Closer centres collide more often: the nearest well-observed distance bucket of untested
+        // pairs is far more likely to collide than the far one.
+        let near = (0..DIST_BUCKETS)
+            .map(|d| &cal.bins[d])
+            .find(|b| b.count >= 50)
+            .expect("observed");
+        assert!(near.p_separate < 0.5 * far.p_separate, "{near:?}");
+        // In-sample reliability is good by construction; the held-out check is the bench's.
+        let (rows, brier, ece) = obs.reliability(&cal, 10);
+        assert_eq!(rows.len(), 10);
+        assert!(brier < 0.25 && ece < 0.1, "brier {brier}, ece {ece}");
+    }
+
+    #[test]
+    fn the_table_round_trips_through_rust_source() {
+        let cal = Observations::record(&[SceneConfig::paper(200, 1)], 5, 2)
+            .expect("valid")
+            .calibration();
+        let src = cal.to_rust_source("test");
+        assert!(src.contains("pub(super) const DEPTH: u8 = 4;"));
+        assert_eq!(src.matches("),\n").count(), cal.bins().len());
+    }
+}
