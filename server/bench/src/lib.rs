@@ -31,6 +31,7 @@ pub mod plots;
 pub mod protocol;
 pub mod report;
 pub mod runner;
+pub mod scale;
 pub mod stats;
 pub mod stress;
 

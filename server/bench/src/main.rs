@@ -28,6 +28,9 @@ enum Command {
     /// Soak the engine: long runs checked every frame (finite state, bodies inside, unit
     /// quaternions, momentum and energy, sticking, tunnelling). Exits non-zero if a check fails.
     Stress(StressArgs),
+    /// Measure the engine at N = 10,000, 100,000 and 1,000,000 with 1 and 2 threads, exact and with
+    /// a frame budget: whole-step p50/p99, phase shares, ns per body, peak RSS, foveal exactness.
+    Scale(ScaleArgs),
 }
 
 #[derive(Debug, Args)]
@@ -218,10 +221,78 @@ fn study(args: &StudyArgs) -> Result<()> {
     Ok(())
 }
 
+#[derive(Debug, Args)]
+struct ScaleArgs {
+    /// Smoke version (N = 10,000 and 100,000, a few frames per run): seconds.
+    #[arg(long)]
+    quick: bool,
+    /// Body counts, comma separated (default 10000,100000,1000000).
+    #[arg(long, value_delimiter = ',')]
+    n: Option<Vec<u32>>,
+    /// Thread counts, comma separated.
+    #[arg(long, value_delimiter = ',', default_value = "1,2")]
+    threads: Vec<u32>,
+    /// Measured frames per run (default 600 / 200 / 30 at 10k / 100k / 1M).
+    #[arg(long)]
+    frames: Option<u32>,
+    /// Uncounted warm-up frames per run (default 60 / 30 / 15 at 10k / 100k / 1M).
+    #[arg(long)]
+    warmup: Option<u32>,
+    /// Frame budget in ms: one value for every N, or one per N (default 4 / 16 / 50 at
+    /// 10k / 100k / 1M).
+    #[arg(long, value_delimiter = ',')]
+    budget_ms: Option<Vec<f64>>,
+    /// Scene seed.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Output directory (scale.csv, scale.md).
+    #[arg(long, default_value = foveal_bench::scale::DEFAULT_OUT)]
+    out: PathBuf,
+    /// Run one configuration (JSON) and print its result as one JSON line (used by the parent).
+    #[arg(long, hide = true)]
+    child: Option<String>,
+}
+
+fn scale(args: &ScaleArgs) -> Result<()> {
+    use foveal_bench::scale;
+    if let Some(spec) = &args.child {
+        println!("{}", scale::child_main(spec)?);
+        return Ok(());
+    }
+    let ns = match (&args.n, args.quick) {
+        (Some(n), _) => n.clone(),
+        (None, true) => scale::QUICK_NS.to_vec(),
+        (None, false) => scale::DEFAULT_NS.to_vec(),
+    };
+    let cfg = scale::ScaleConfig {
+        ns,
+        threads: args.threads.clone(),
+        frames: args.frames,
+        warmup: args.warmup,
+        budget_ms: args.budget_ms.clone().unwrap_or_default(),
+        quick: args.quick,
+        seed: args.seed,
+        out: args.out.clone(),
+    };
+    let exe = std::env::current_exe().context("locating the foveal-bench binary")?;
+    eprintln!(
+        "foveal-bench scale: {} runs -> {}",
+        cfg.plan().len(),
+        cfg.out.display()
+    );
+    let out = scale::run(&cfg, &exe, true).context("scale run failed")?;
+    print!("{}", scale::markdown(&out));
+    for f in &out.files {
+        eprintln!("wrote {}", f.display());
+    }
+    Ok(())
+}
+
 fn main() -> Result<()> {
     let cli = Cli::parse();
     match &cli.command {
         Command::Study(args) => study(args),
         Command::Stress(args) => stress(args),
+        Command::Scale(args) => scale(args),
     }
 }

@@ -1,0 +1,969 @@
+//! `foveal-bench scale`: the engine at N = 10,000, 100,000 and 1,000,000 bodies, with 1 and 2
+//! threads, exact and under a frame budget, each configuration in its own child process so that its
+//! peak RSS is its own.
+//!
+//! Every run is the paper scene (seed 1), round-robin scheduling, a fixation at the centre of the
+//! screen and a wall clock ([`InstantClock`]). It warms up for some uncounted frames (random
+//! placement starts with deep overlaps) and then times each `Simulation::step` with `Instant`: the
+//! whole step, p50 and p99, is that time, not the sum of the profiled phases (which is reported
+//! beside it). Phase shares are each profiled phase's total over the run divided by the total step
+//! time. "Foveal exact" is the share of frames in which no candidate pair within 5 degrees of the
+//! fixation was deemed (`FrameReport::foveal_deemed == 0`).
+//!
+//! The parent re-executes its own binary once per configuration with a hidden `--child SPEC`
+//! argument (SPEC a JSON [`RunSpec`]); the child runs it with [`run_one`] and prints one JSON
+//! [`RunResult`] line with its own peak RSS (`VmHWM` of `/proc/self/status`). Configurations run
+//! one after another, never side by side.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+use foveal_engine::{
+    BudgetSpec, ConfigError, Fixation, PhaseProfile, SceneConfig, SchedulerKind, SimConfig,
+    Simulation,
+};
+use serde::{Deserialize, Serialize};
+
+use crate::runner::InstantClock;
+
+/// Body counts measured by default.
+pub const DEFAULT_NS: [u32; 3] = [10_000, 100_000, 1_000_000];
+/// Body counts of `--quick`.
+pub const QUICK_NS: [u32; 2] = [10_000, 100_000];
+/// Thread counts measured by default.
+pub const DEFAULT_THREADS: [u32; 2] = [1, 2];
+/// Default output directory.
+pub const DEFAULT_OUT: &str = "results/scale";
+/// The hidden argument that makes `foveal-bench scale` run one configuration and print its result.
+pub const CHILD_ARG: &str = "--child";
+
+/// Pipeline order of the profiled phases; phases the profile has beyond these follow, by name.
+const PHASE_ORDER: [&str; 6] = [
+    "integrate",
+    "broad",
+    "prioritise",
+    "narrow",
+    "response",
+    "measure",
+];
+
+/// Everything that can stop a scale run.
+#[derive(Debug, thiserror::Error)]
+pub enum ScaleError {
+    /// The engine refused a configuration.
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    /// A file could not be written.
+    #[error("{path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// The child process could not be started.
+    #[error("starting {exe}: {source}")]
+    Spawn {
+        /// The executable.
+        exe: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// A child process failed or printed no result.
+    #[error("run {spec} failed ({status}): {stderr}")]
+    Child {
+        /// The run, as passed to the child.
+        spec: String,
+        /// Exit status.
+        status: String,
+        /// The child's standard error (its last lines).
+        stderr: String,
+    },
+    /// A run spec or result could not be read or written as JSON.
+    #[error("{what}: {source}")]
+    Json {
+        /// What was being read or written.
+        what: String,
+        /// The cause.
+        source: serde_json::Error,
+    },
+    /// The scale configuration is unusable.
+    #[error("invalid scale run: {0}")]
+    Invalid(String),
+}
+
+impl ScaleError {
+    fn io(path: &Path, source: std::io::Error) -> Self {
+        Self::Io {
+            path: path.to_owned(),
+            source,
+        }
+    }
+}
+
+/// The budget of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub enum Mode {
+    /// Every pair resolved exactly (`BudgetSpec::Exact`).
+    Exact,
+    /// A wall-clock budget for the frame, in milliseconds (`BudgetSpec::WallMs`).
+    BudgetMs(f64),
+}
+
+impl Mode {
+    /// Label for tables: `exact` or `budget 16 ms`.
+    pub fn label(&self) -> String {
+        match self {
+            Self::Exact => "exact".into(),
+            Self::BudgetMs(ms) => format!("budget {ms} ms"),
+        }
+    }
+
+    fn budget(&self) -> BudgetSpec {
+        match *self {
+            Self::Exact => BudgetSpec::Exact,
+            Self::BudgetMs(ms) => BudgetSpec::WallMs(ms),
+        }
+    }
+
+    fn budget_ms(&self) -> Option<f64> {
+        match *self {
+            Self::Exact => None,
+            Self::BudgetMs(ms) => Some(ms),
+        }
+    }
+}
+
+/// One configuration, as handed to a child process.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RunSpec {
+    /// Bodies.
+    pub n: u32,
+    /// `SimConfig::threads`.
+    pub threads: u32,
+    /// Exact or budgeted.
+    pub mode: Mode,
+    /// Scene seed.
+    pub seed: u64,
+    /// Uncounted frames before the measured ones.
+    pub warmup: u32,
+    /// Measured frames.
+    pub frames: u32,
+}
+
+/// What one run measured.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RunResult {
+    /// The run.
+    pub spec: RunSpec,
+    /// Whole step (`Instant` around `Simulation::step`), median over the measured frames (ms).
+    pub step_p50_ms: f64,
+    /// Whole step, 99th percentile (nearest rank; the maximum below 100 frames) (ms).
+    pub step_p99_ms: f64,
+    /// Whole step, mean (ms).
+    pub step_mean_ms: f64,
+    /// Whole step, maximum (ms).
+    pub step_max_ms: f64,
+    /// Sum of the profiled phases, median (ms).
+    pub phases_p50_ms: f64,
+    /// Each profiled phase (name without `_ns`) and its share of the total step time.
+    pub phase_share: Vec<(String, f64)>,
+    /// Median whole step per body (ns).
+    pub step_ns_per_body: f64,
+    /// Mean broad phase per body (ns).
+    pub broad_ns_per_body: f64,
+    /// Peak resident set of the child process (`VmHWM`, KiB; 0 where unavailable).
+    pub peak_rss_kib: u64,
+    /// Share of frames in which every candidate pair within 5 degrees of the fixation was settled
+    /// exactly (none deemed).
+    pub foveal_exact_share: f64,
+    /// Mean candidate pairs within 5 degrees of the fixation per frame.
+    pub foveal_pairs_mean: f64,
+    /// Mean candidate pairs per frame.
+    pub candidates_mean: f64,
+    /// Mean deemed pairs per frame.
+    pub deemed_mean: f64,
+    /// Mean sphere tests per frame.
+    pub sphere_tests_mean: f64,
+    /// Scene generation and simulation set-up (s).
+    pub setup_s: f64,
+    /// Warm-up frames (s).
+    pub warmup_s: f64,
+    /// 1-minute load average when the run started (`None` without `/proc/loadavg`).
+    pub load1_start: Option<f64>,
+}
+
+/// The whole command.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScaleConfig {
+    /// Body counts.
+    pub ns: Vec<u32>,
+    /// Thread counts.
+    pub threads: Vec<u32>,
+    /// Measured frames per run (None: [`default_frames`]).
+    pub frames: Option<u32>,
+    /// Warm-up frames per run (None: [`default_warmup`]).
+    pub warmup: Option<u32>,
+    /// Frame budget per N (ms): empty for [`default_budget_ms`], one value for every N, or one per N.
+    pub budget_ms: Vec<f64>,
+    /// Smaller frame counts (and, from the command line, [`QUICK_NS`]).
+    pub quick: bool,
+    /// Scene seed.
+    pub seed: u64,
+    /// Output directory.
+    pub out: PathBuf,
+}
+
+impl Default for ScaleConfig {
+    fn default() -> Self {
+        Self {
+            ns: DEFAULT_NS.to_vec(),
+            threads: DEFAULT_THREADS.to_vec(),
+            frames: None,
+            warmup: None,
+            budget_ms: Vec::new(),
+            quick: false,
+            seed: 1,
+            out: PathBuf::from(DEFAULT_OUT),
+        }
+    }
+}
+
+/// Measured frames per run at `n`: enough for a p99 where frames are cheap, few at 1,000,000 so
+/// that the default command finishes in about ten minutes on two cores (there p99 is the maximum).
+pub fn default_frames(n: u32, quick: bool) -> u32 {
+    let [small, medium, large] = if quick { [20, 6, 2] } else { [600, 200, 30] };
+    by_size(n, small, medium, large)
+}
+
+/// Warm-up frames at `n`. Random placement starts with deep overlaps: at N = 100,000 the exact
+/// step falls from about 3x the steady state over the first 15 frames and settles by 30. At
+/// 1,000,000 the first frames cost seconds each (710 M sphere tests in the first), so 15.
+pub fn default_warmup(n: u32, quick: bool) -> u32 {
+    if quick { 2 } else { by_size(n, 60, 30, 15) }
+}
+
+/// `small` up to 30,000 bodies, `medium` up to 300,000, `large` above.
+fn by_size(n: u32, small: u32, medium: u32, large: u32) -> u32 {
+    if n <= 30_000 {
+        small
+    } else if n <= 300_000 {
+        medium
+    } else {
+        large
+    }
+}
+
+/// The frame budget the issue sets for `n` (ms): 4 up to 10,000 bodies, 16 up to 100,000, 50 above.
+pub fn default_budget_ms(n: u32) -> f64 {
+    if n <= 10_000 {
+        4.0
+    } else if n <= 100_000 {
+        16.0
+    } else {
+        50.0
+    }
+}
+
+impl ScaleConfig {
+    /// Refuse configurations that cannot run.
+    pub fn validate(&self) -> Result<(), ScaleError> {
+        let bad = |m: String| Err(ScaleError::Invalid(m));
+        if self.ns.is_empty() || self.threads.is_empty() {
+            return bad("at least one N and one thread count are needed".into());
+        }
+        if self.frames == Some(0) {
+            return bad("at least one measured frame is needed".into());
+        }
+        if self.budget_ms.len() > 1 && self.budget_ms.len() != self.ns.len() {
+            return bad(format!(
+                "{} budgets for {} values of N: give one, or one per N",
+                self.budget_ms.len(),
+                self.ns.len()
+            ));
+        }
+        if let Some(ms) = self
+            .budget_ms
+            .iter()
+            .find(|ms| !(ms.is_finite() && **ms > 0.0))
+        {
+            return bad(format!("budget {ms} ms is not finite and > 0"));
+        }
+        for spec in self.plan() {
+            sim_config(&spec).validate()?;
+        }
+        Ok(())
+    }
+
+    /// The budget for the `i`-th N.
+    fn budget_for(&self, i: usize, n: u32) -> f64 {
+        match self.budget_ms.as_slice() {
+            [] => default_budget_ms(n),
+            [ms] => *ms,
+            all => all[i],
+        }
+    }
+
+    /// Every run, in order: for each N, exact then budgeted, each with every thread count.
+    pub fn plan(&self) -> Vec<RunSpec> {
+        let mut out = Vec::new();
+        for (i, &n) in self.ns.iter().enumerate() {
+            let frames = self.frames.unwrap_or(default_frames(n, self.quick));
+            let warmup = self.warmup.unwrap_or(default_warmup(n, self.quick));
+            for mode in [Mode::Exact, Mode::BudgetMs(self.budget_for(i, n))] {
+                for &threads in &self.threads {
+                    out.push(RunSpec {
+                        n,
+                        threads,
+                        mode,
+                        seed: self.seed,
+                        warmup,
+                        frames,
+                    });
+                }
+            }
+        }
+        out
+    }
+}
+
+/// The engine configuration of a run.
+fn sim_config(spec: &RunSpec) -> SimConfig {
+    let mut c = SimConfig {
+        scene: SceneConfig::paper(spec.n, spec.seed),
+        budget: spec.mode.budget(),
+        scheduler: SchedulerKind::RoundRobin,
+        audit: false,
+        ..SimConfig::default()
+    };
+    c.threads = spec.threads;
+    c
+}
+
+/// The profiled phases of `p`, as (name without `_ns`, nanoseconds), in pipeline order. Read
+/// through the profile's serialised form, so a phase added to [`PhaseProfile`] is reported without
+/// a change here.
+fn phases(p: &PhaseProfile) -> Vec<(String, u64)> {
+    let mut out: Vec<(String, u64)> = match serde_json::to_value(p) {
+        Ok(serde_json::Value::Object(m)) => m
+            .iter()
+            .filter_map(|(k, v)| Some((k.strip_suffix("_ns")?.to_string(), v.as_u64()?)))
+            .collect(),
+        _ => Vec::new(),
+    };
+    let rank = |name: &str| {
+        PHASE_ORDER
+            .iter()
+            .position(|p| *p == name)
+            .unwrap_or(PHASE_ORDER.len())
+    };
+    out.sort_by(|a, b| rank(&a.0).cmp(&rank(&b.0)).then_with(|| a.0.cmp(&b.0)));
+    out
+}
+
+/// Nearest-rank percentile of sorted values.
+fn percentile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let rank = (q * sorted.len() as f64).ceil() as usize;
+    sorted[rank.clamp(1, sorted.len()) - 1]
+}
+
+/// The three load averages of `/proc/loadavg`.
+pub fn load_average() -> Option<[f64; 3]> {
+    let text = std::fs::read_to_string("/proc/loadavg").ok()?;
+    let mut it = text.split_whitespace().map(|s| s.parse::<f64>().ok());
+    Some([it.next()??, it.next()??, it.next()??])
+}
+
+/// Peak resident set of this process (`VmHWM`, KiB), 0 where `/proc/self/status` has none.
+pub fn peak_rss_kib() -> u64 {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find_map(|l| l.strip_prefix("VmHWM:"))
+                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse().ok())
+        })
+        .unwrap_or(0)
+}
+
+/// Run one configuration in this process.
+pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
+    let load1_start = load_average().map(|l| l[0]);
+    let started = Instant::now();
+    let mut sim = Simulation::new(sim_config(spec))?;
+    let setup_s = started.elapsed().as_secs_f64();
+    let clock = InstantClock::new();
+    let fixation = Some(Fixation::at(0.5, 0.5));
+    let started = Instant::now();
+    for _ in 0..spec.warmup {
+        sim.step(fixation, &clock);
+    }
+    let warmup_s = started.elapsed().as_secs_f64();
+
+    let frames = spec.frames.max(1) as usize;
+    let mut step_ms = Vec::with_capacity(frames);
+    let mut phases_ms = Vec::with_capacity(frames);
+    let mut phase_totals: Vec<(String, u64)> = Vec::new();
+    let (mut good, mut foveal, mut candidates, mut deemed, mut tests) =
+        (0u64, 0u64, 0u64, 0u64, 0u64);
+    for _ in 0..frames {
+        let t = Instant::now();
+        let r = sim.step(fixation, &clock);
+        step_ms.push(t.elapsed().as_secs_f64() * 1e3);
+        let ph = phases(&r.profile);
+        phases_ms.push(ph.iter().map(|(_, ns)| *ns as f64).sum::<f64>() * 1e-6);
+        if phase_totals.is_empty() {
+            phase_totals = ph.iter().map(|(k, _)| (k.clone(), 0)).collect();
+        }
+        for ((_, total), (_, ns)) in phase_totals.iter_mut().zip(&ph) {
+            *total += ns;
+        }
+        good += u64::from(r.foveal_deemed == 0);
+        foveal += u64::from(r.foveal_pairs);
+        candidates += u64::from(r.candidate_pairs);
+        deemed += u64::from(r.deemed);
+        tests += r.sphere_tests;
+    }
+    let total_ms: f64 = step_ms.iter().sum();
+    let mean = |v: u64| v as f64 / frames as f64;
+    let broad_total = phase_totals
+        .iter()
+        .find(|(k, _)| k == "broad")
+        .map_or(0, |(_, ns)| *ns);
+    let mut sorted = step_ms.clone();
+    sorted.sort_by(f64::total_cmp);
+    phases_ms.sort_by(f64::total_cmp);
+    let step_p50_ms = percentile(&sorted, 0.5);
+    Ok(RunResult {
+        spec: spec.clone(),
+        step_p50_ms,
+        step_p99_ms: percentile(&sorted, 0.99),
+        step_mean_ms: total_ms / frames as f64,
+        step_max_ms: sorted.last().copied().unwrap_or(f64::NAN),
+        phases_p50_ms: percentile(&phases_ms, 0.5),
+        phase_share: phase_totals
+            .into_iter()
+            .map(|(k, ns)| (k, ns as f64 * 1e-6 / total_ms))
+            .collect(),
+        step_ns_per_body: step_p50_ms * 1e6 / f64::from(spec.n),
+        broad_ns_per_body: mean(broad_total) / f64::from(spec.n),
+        peak_rss_kib: peak_rss_kib(),
+        foveal_exact_share: mean(good),
+        foveal_pairs_mean: mean(foveal),
+        candidates_mean: mean(candidates),
+        deemed_mean: mean(deemed),
+        sphere_tests_mean: mean(tests),
+        setup_s,
+        warmup_s,
+        load1_start,
+    })
+}
+
+/// The child's side: parse `spec_json`, run it, and return the result as one JSON line.
+pub fn child_main(spec_json: &str) -> Result<String, ScaleError> {
+    let spec: RunSpec = serde_json::from_str(spec_json).map_err(|source| ScaleError::Json {
+        what: format!("run spec {spec_json:?}"),
+        source,
+    })?;
+    let result = run_one(&spec)?;
+    serde_json::to_string(&result).map_err(|source| ScaleError::Json {
+        what: "run result".into(),
+        source,
+    })
+}
+
+/// Run `spec` in a child process: `exe scale --child SPEC`, reading its one JSON line.
+pub fn run_child(exe: &Path, spec: &RunSpec) -> Result<RunResult, ScaleError> {
+    let json = serde_json::to_string(spec).map_err(|source| ScaleError::Json {
+        what: "run spec".into(),
+        source,
+    })?;
+    let out = Command::new(exe)
+        .args(["scale", CHILD_ARG, &json])
+        .output()
+        .map_err(|source| ScaleError::Spawn {
+            exe: exe.to_owned(),
+            source,
+        })?;
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let line = stdout
+        .lines()
+        .rev()
+        .find(|l| l.trim_start().starts_with('{'));
+    let fail = |status: String| {
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        let tail: Vec<&str> = stderr.lines().rev().take(20).collect();
+        ScaleError::Child {
+            spec: json.clone(),
+            status,
+            stderr: tail.into_iter().rev().collect::<Vec<_>>().join("\n"),
+        }
+    };
+    if !out.status.success() {
+        return Err(fail(out.status.to_string()));
+    }
+    let Some(line) = line else {
+        return Err(fail("no result line".into()));
+    };
+    serde_json::from_str(line).map_err(|source| ScaleError::Json {
+        what: format!("result of {json}"),
+        source,
+    })
+}
+
+/// A target of the issue and whether the run met it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TargetCheck {
+    /// What is measured, e.g. `N = 100,000 exact, 2 threads: step p50`.
+    pub what: String,
+    /// The measured value.
+    pub value: f64,
+    /// The limit.
+    pub limit: f64,
+    /// Unit of both.
+    pub unit: &'static str,
+    /// `value <= limit` (`value >= limit` when `at_least`).
+    pub met: bool,
+    /// The limit is a lower bound.
+    pub at_least: bool,
+}
+
+/// What a scale run produced.
+#[derive(Debug, Clone, Default)]
+pub struct ScaleOutput {
+    /// Every run, in plan order.
+    pub results: Vec<RunResult>,
+    /// Load averages (1, 5, 15 min) before the first run and after the last.
+    pub load_start: Option<[f64; 3]>,
+    /// See `load_start`.
+    pub load_end: Option<[f64; 3]>,
+    /// Wall time of the whole command (s).
+    pub wall_s: f64,
+    /// Files written.
+    pub files: Vec<PathBuf>,
+}
+
+impl ScaleOutput {
+    fn find(&self, n: u32, threads: u32, exact: bool) -> Option<&RunResult> {
+        self.results.iter().find(|r| {
+            r.spec.n == n && r.spec.threads == threads && (r.spec.mode == Mode::Exact) == exact
+        })
+    }
+
+    /// The issue's targets that this run's configurations can answer (2-thread rows unless a
+    /// target names one thread; budget targets only when the budget is the issue's).
+    pub fn targets(&self) -> Vec<TargetCheck> {
+        let mut out = Vec::new();
+        let mut check = |what: String, value: f64, limit: f64, unit, at_least: bool| {
+            let met = if at_least {
+                value >= limit
+            } else {
+                value <= limit
+            };
+            out.push(TargetCheck {
+                what,
+                value,
+                limit,
+                unit,
+                met,
+                at_least,
+            });
+        };
+        let budget_is = |r: &RunResult, ms: f64| r.spec.mode == Mode::BudgetMs(ms);
+        if let Some(r) = self.find(10_000, 2, true) {
+            check(
+                "N = 10,000 exact, 2 threads: step p50".into(),
+                r.step_p50_ms,
+                2.0,
+                "ms",
+                false,
+            );
+        }
+        if let Some(r) = self.find(100_000, 2, true) {
+            check(
+                "N = 100,000 exact, 2 threads: step p50".into(),
+                r.step_p50_ms,
+                25.0,
+                "ms",
+                false,
+            );
+            if let Some(one) = self.find(100_000, 1, true) {
+                check(
+                    "N = 100,000 exact: 2-thread speed-up (p50, 1 thread / 2 threads)".into(),
+                    one.step_p50_ms / r.step_p50_ms,
+                    1.7,
+                    "x",
+                    true,
+                );
+            }
+        }
+        if let Some(r) = self.find(100_000, 2, false).filter(|r| budget_is(r, 16.0)) {
+            check(
+                "N = 100,000, 16 ms budget, 2 threads: step p99".into(),
+                r.step_p99_ms,
+                16.7,
+                "ms",
+                false,
+            );
+            check(
+                "N = 100,000, 16 ms budget, 2 threads: frames with every pair within 5° settled exactly".into(),
+                100.0 * r.foveal_exact_share,
+                99.0,
+                "%",
+                true,
+            );
+        }
+        if let Some(r) = self
+            .find(1_000_000, 2, false)
+            .filter(|r| budget_is(r, 50.0))
+        {
+            check(
+                "N = 1,000,000, 50 ms budget, 2 threads: step p99".into(),
+                r.step_p99_ms,
+                52.0,
+                "ms",
+                false,
+            );
+        }
+        if let Some(r) = self.find(1_000_000, 2, true) {
+            check(
+                "N = 1,000,000 exact, 2 threads: step p50".into(),
+                r.step_p50_ms,
+                250.0,
+                "ms",
+                false,
+            );
+        }
+        let rss_1m = self
+            .results
+            .iter()
+            .filter(|r| r.spec.n == 1_000_000 && r.spec.mode == Mode::Exact)
+            .map(|r| r.peak_rss_kib)
+            .max();
+        if let Some(kib) = rss_1m {
+            check(
+                "N = 1,000,000 exact: peak RSS (largest over thread counts)".into(),
+                kib as f64 / 1024.0,
+                600.0,
+                "MiB",
+                false,
+            );
+        }
+        if let Some(r) = self.find(1_000_000, 1, true) {
+            check(
+                "N = 1,000,000 exact, 1 thread: broad phase per body".into(),
+                r.broad_ns_per_body,
+                40.0,
+                "ns",
+                false,
+            );
+        }
+        let worst_measure = self
+            .results
+            .iter()
+            .filter_map(|r| {
+                let share = r.phase_share.iter().find(|(k, _)| k == "measure")?.1;
+                Some((share, r))
+            })
+            .max_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((share, r)) = worst_measure {
+            check(
+                format!(
+                    "metrics share of the step, worst run (N = {}, {}, {} threads)",
+                    r.spec.n,
+                    r.spec.mode.label(),
+                    r.spec.threads
+                ),
+                100.0 * share,
+                5.0,
+                "%",
+                false,
+            );
+        }
+        out
+    }
+}
+
+/// Every phase name of `results`, in pipeline order.
+fn phase_names(results: &[RunResult]) -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for r in results {
+        for (k, _) in &r.phase_share {
+            if !names.contains(k) {
+                names.push(k.clone());
+            }
+        }
+    }
+    names
+}
+
+fn fmt_load(l: Option<[f64; 3]>) -> String {
+    l.map_or("unavailable".into(), |l| {
+        format!("{:.2} {:.2} {:.2}", l[0], l[1], l[2])
+    })
+}
+
+/// Thousands separators, for N in tables.
+fn grouped(n: u32) -> String {
+    let s = n.to_string();
+    let mut out = String::new();
+    for (i, c) in s.chars().enumerate() {
+        if i > 0 && (s.len() - i) % 3 == 0 {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
+/// The results as a markdown table, with the protocol, load averages and the targets.
+pub fn markdown(out: &ScaleOutput) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "Paper scene (seed {}), round-robin, fixation at the screen centre, wall clock. Whole step = \
+         `Instant` around `Simulation::step` (p99 nearest rank: the maximum below 100 frames); \
+         phase shares = phase totals from `FrameReport.profile` over total step time; foveal exact = \
+         frames in which no pair within 5° of the fixation was deemed. Each run in its own process; \
+         RSS is its peak (`VmHWM`).\n",
+        out.results.first().map_or(1, |r| r.spec.seed)
+    );
+    let _ = writeln!(
+        s,
+        "Load average (1/5/15 min): {} at start, {} at end; {} runs in {:.0} s.\n",
+        fmt_load(out.load_start),
+        fmt_load(out.load_end),
+        out.results.len(),
+        out.wall_s
+    );
+    let names = phase_names(&out.results);
+    let _ = write!(
+        s,
+        "| N | mode | threads | warm-up + frames | step p50 (ms) | step p99 (ms) | phases p50 (ms) |"
+    );
+    for k in &names {
+        let _ = write!(s, " {k} |");
+    }
+    let _ = writeln!(
+        s,
+        " step ns/body | broad ns/body | peak RSS (MiB) | foveal exact | foveal pairs/frame | candidates/frame | deemed/frame |"
+    );
+    let _ = write!(s, "|---|---|---|---|---|---|---|");
+    for _ in &names {
+        let _ = write!(s, "---|");
+    }
+    let _ = writeln!(s, "---|---|---|---|---|---|---|");
+    for r in &out.results {
+        let _ = write!(
+            s,
+            "| {} | {} | {} | {} + {} | {:.2} | {:.2} | {:.2} |",
+            grouped(r.spec.n),
+            r.spec.mode.label(),
+            r.spec.threads,
+            r.spec.warmup,
+            r.spec.frames,
+            r.step_p50_ms,
+            r.step_p99_ms,
+            r.phases_p50_ms
+        );
+        for k in &names {
+            match r.phase_share.iter().find(|(name, _)| name == k) {
+                Some((_, share)) => {
+                    let _ = write!(s, " {:.1}% |", 100.0 * share);
+                }
+                None => s.push_str(" – |"),
+            }
+        }
+        let _ = writeln!(
+            s,
+            " {:.1} | {:.1} | {:.0} | {:.1}% | {:.1} | {:.0} | {:.0} |",
+            r.step_ns_per_body,
+            r.broad_ns_per_body,
+            r.peak_rss_kib as f64 / 1024.0,
+            100.0 * r.foveal_exact_share,
+            r.foveal_pairs_mean,
+            r.candidates_mean,
+            r.deemed_mean
+        );
+    }
+    let targets = out.targets();
+    if !targets.is_empty() {
+        let _ = writeln!(
+            s,
+            "\n| target | measured | limit | met |\n|---|---|---|---|"
+        );
+        for t in &targets {
+            let _ = writeln!(
+                s,
+                "| {} | {:.2} {} | {} {} {} | {} |",
+                t.what,
+                t.value,
+                t.unit,
+                if t.at_least { ">=" } else { "<=" },
+                t.limit,
+                t.unit,
+                if t.met { "**met**" } else { "missed" }
+            );
+        }
+    }
+    s
+}
+
+/// One CSV row per run.
+pub fn csv(results: &[RunResult]) -> String {
+    let names = phase_names(results);
+    let mut s = String::from(
+        "n,mode,budget_ms,threads,seed,warmup,frames,step_p50_ms,step_p99_ms,step_mean_ms,step_max_ms,phases_p50_ms",
+    );
+    for k in &names {
+        let _ = write!(s, ",share_{k}");
+    }
+    s.push_str(
+        ",step_ns_per_body,broad_ns_per_body,peak_rss_kib,foveal_exact_share,foveal_pairs_mean,\
+         candidates_mean,deemed_mean,sphere_tests_mean,setup_s,warmup_s,load1_start\n",
+    );
+    let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
+    for r in results {
+        let _ = write!(
+            s,
+            "{},{},{},{},{},{},{},{},{},{},{},{}",
+            r.spec.n,
+            if r.spec.mode == Mode::Exact {
+                "exact"
+            } else {
+                "budget"
+            },
+            opt(r.spec.mode.budget_ms()),
+            r.spec.threads,
+            r.spec.seed,
+            r.spec.warmup,
+            r.spec.frames,
+            r.step_p50_ms,
+            r.step_p99_ms,
+            r.step_mean_ms,
+            r.step_max_ms,
+            r.phases_p50_ms
+        );
+        for k in &names {
+            let share = r.phase_share.iter().find(|(name, _)| name == k);
+            let _ = write!(s, ",{}", opt(share.map(|(_, v)| *v)));
+        }
+        let _ = writeln!(
+            s,
+            ",{},{},{},{},{},{},{},{},{},{},{}",
+            r.step_ns_per_body,
+            r.broad_ns_per_body,
+            r.peak_rss_kib,
+            r.foveal_exact_share,
+            r.foveal_pairs_mean,
+            r.candidates_mean,
+            r.deemed_mean,
+            r.sphere_tests_mean,
+            r.setup_s,
+            r.warmup_s,
+            opt(r.load1_start)
+        );
+    }
+    s
+}
+
+/// Run every configuration of `cfg`, each in a child process of `exe` (the `foveal-bench`
+/// binary), and write `scale.csv` and `scale.md` under `cfg.out`. `progress` prints one line per
+/// run to stderr.
+pub fn run(cfg: &ScaleConfig, exe: &Path, progress: bool) -> Result<ScaleOutput, ScaleError> {
+    cfg.validate()?;
+    std::fs::create_dir_all(&cfg.out).map_err(|e| ScaleError::io(&cfg.out, e))?;
+    let started = Instant::now();
+    let mut out = ScaleOutput {
+        load_start: load_average(),
+        ..ScaleOutput::default()
+    };
+    let plan = cfg.plan();
+    for (i, spec) in plan.iter().enumerate() {
+        let t = Instant::now();
+        let r = run_child(exe, spec)?;
+        if progress {
+            eprintln!(
+                "[{}/{}] N={} {} threads={}: step p50 {:.2} ms, p99 {:.2} ms, RSS {:.0} MiB ({:.0} s)",
+                i + 1,
+                plan.len(),
+                spec.n,
+                spec.mode.label(),
+                spec.threads,
+                r.step_p50_ms,
+                r.step_p99_ms,
+                r.peak_rss_kib as f64 / 1024.0,
+                t.elapsed().as_secs_f64()
+            );
+        }
+        out.results.push(r);
+    }
+    out.load_end = load_average();
+    out.wall_s = started.elapsed().as_secs_f64();
+    let csv_path = cfg.out.join("scale.csv");
+    std::fs::write(&csv_path, csv(&out.results)).map_err(|e| ScaleError::io(&csv_path, e))?;
+    let md_path = cfg.out.join("scale.md");
+    let md = format!("# foveal-bench scale\n\n{}", markdown(&out));
+    std::fs::write(&md_path, md).map_err(|e| ScaleError::io(&md_path, e))?;
+    out.files = vec![csv_path, md_path];
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn percentiles_are_nearest_rank() {
+        let v: Vec<f64> = (1..=200).map(f64::from).collect();
+        assert_eq!(percentile(&v, 0.5), 100.0);
+        assert_eq!(percentile(&v, 0.99), 198.0);
+        assert_eq!(percentile(&v[..40], 0.99), 40.0);
+        assert!(percentile(&[], 0.5).is_nan());
+    }
+
+    #[test]
+    fn phases_come_in_pipeline_order() {
+        let names: Vec<String> = phases(&PhaseProfile::default())
+            .into_iter()
+            .map(|(k, _)| k)
+            .collect();
+        let known: Vec<&str> = PHASE_ORDER
+            .iter()
+            .copied()
+            .filter(|k| names.iter().any(|n| n == k))
+            .collect();
+        assert_eq!(&names[..known.len()], known.as_slice());
+        for k in ["integrate", "broad", "narrow", "response", "measure"] {
+            assert!(names.iter().any(|n| n == k), "{k} missing from {names:?}");
+        }
+    }
+
+    #[test]
+    fn plan_and_validation() {
+        let cfg = ScaleConfig::default();
+        let plan = cfg.plan();
+        assert_eq!(plan.len(), 3 * 2 * 2);
+        assert_eq!(plan[2].mode, Mode::BudgetMs(4.0));
+        assert_eq!(plan[6].mode, Mode::BudgetMs(16.0));
+        assert_eq!(plan[10].mode, Mode::BudgetMs(50.0));
+        cfg.validate().expect("defaults valid");
+        let bad = ScaleConfig {
+            budget_ms: vec![1.0, 2.0],
+            ..ScaleConfig::default()
+        };
+        assert!(bad.validate().is_err());
+        let bad = ScaleConfig {
+            threads: vec![0],
+            ..ScaleConfig::default()
+        };
+        assert!(matches!(bad.validate(), Err(ScaleError::Config(_))));
+        assert_eq!(grouped(1_000_000), "1,000,000");
+        assert_eq!(grouped(999), "999");
+    }
+}
