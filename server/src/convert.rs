@@ -30,13 +30,14 @@ pub fn scheduler_to_pb(k: SchedulerKind) -> pb::Scheduler {
         SchedulerKind::PriorityOnly => pb::Scheduler::PriorityOnly,
         SchedulerKind::PrioritySorted => pb::Scheduler::PrioritySorted,
         SchedulerKind::ExpectedGain => pb::Scheduler::ExpectedGain,
+        SchedulerKind::Priced => pb::Scheduler::Priced,
     }
 }
 
 /// Protocol enum → engine scheduler; `None` for "unspecified" (keep the current one).
 pub fn scheduler_from_pb(raw: i32) -> Result<Option<SchedulerKind>, ConfigError> {
     let k = pb::Scheduler::try_from(raw)
-        .map_err(|_| invalid("scheduler", raw, "must be a Scheduler enum value (0..=6)"))?;
+        .map_err(|_| invalid("scheduler", raw, "must be a Scheduler enum value (0..=7)"))?;
     Ok(match k {
         pb::Scheduler::Unspecified => None,
         pb::Scheduler::RoundRobin => Some(SchedulerKind::RoundRobin),
@@ -45,6 +46,7 @@ pub fn scheduler_from_pb(raw: i32) -> Result<Option<SchedulerKind>, ConfigError>
         pb::Scheduler::PriorityOnly => Some(SchedulerKind::PriorityOnly),
         pb::Scheduler::PrioritySorted => Some(SchedulerKind::PrioritySorted),
         pb::Scheduler::ExpectedGain => Some(SchedulerKind::ExpectedGain),
+        pb::Scheduler::Priced => Some(SchedulerKind::Priced),
     })
 }
 
@@ -94,6 +96,9 @@ pub fn model_to_pb(m: PerceptualModel) -> pb::PerceptualModel {
     let model = match m.function {
         PerceptualFunction::F1 => Model::F1(pb::ModelF1 {}),
         PerceptualFunction::F2 { c } => Model::F2(pb::ModelF2 { c }),
+        PerceptualFunction::F2Range { c_min, c_max } => {
+            Model::F2Range(pb::ModelF2Range { c_min, c_max })
+        }
         PerceptualFunction::F3 { c1, c2, c3, e1, e2 } => {
             Model::F3(pb::ModelF3 { c1, c2, c3, e1, e2 })
         }
@@ -128,6 +133,10 @@ pub fn merge_model(
         None => current.function,
         Some(Model::F1(_)) => PerceptualFunction::F1,
         Some(Model::F2(f)) => PerceptualFunction::F2 { c: f.c },
+        Some(Model::F2Range(f)) => PerceptualFunction::F2Range {
+            c_min: f.c_min,
+            c_max: f.c_max,
+        },
         Some(Model::F3(f)) => PerceptualFunction::F3 {
             c1: f.c1,
             c2: f.c2,
@@ -338,6 +347,8 @@ pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &ResolvedFixation) -> 
             broad_s: ns_to_s(p.broad_ns),
             narrow_s: ns_to_s(p.narrow_ns),
             response_s: ns_to_s(p.response_ns),
+            prioritise_s: ns_to_s(p.prioritise_ns),
+            measure_s: ns_to_s(p.measure_ns),
         }),
         dropped_before: 0,
         poses: None,

@@ -9,6 +9,8 @@
 //! # Layout
 //! - [`protocol`]: the study's runs ([`StudyConfig`], [`Mode`], [`RunSpec`]); the paper's N and
 //!   target times.
+//! - [`open_loop`]: schedulers compared on identical frames against the clairvoyant bound.
+//! - [`calibrate`]: regenerates the priced scheduler's table and reports its reliability.
 //! - [`gaze`]: the seeded fixation/saccade script and the recorded-trace reader.
 //! - [`runner`]: the `Instant` clock, one run, the plan, per-frame CSV records.
 //! - [`stats`]: per-run mean/sd, mean and 95% CI across seeds.
@@ -26,7 +28,9 @@
 //! ```
 //! The two parts write separate files, so they can be run separately into one directory.
 
+pub mod calibrate;
 pub mod gaze;
+pub mod open_loop;
 pub mod plots;
 pub mod protocol;
 pub mod report;

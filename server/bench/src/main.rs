@@ -31,6 +31,111 @@ enum Command {
     /// Measure the engine at N = 10,000, 100,000 and 1,000,000 with 1 and 2 threads, exact and with
     /// a frame budget: whole-step p50/p99, phase shares, ns per body, peak RSS, foveal exactness.
     Scale(ScaleArgs),
+    /// Compare schedulers open loop: every scheduler and budget on the identical frames of one
+    /// exact run, against the clairvoyant bound, with the gaze-blind control and model mismatch.
+    OpenLoop(OpenLoopArgs),
+    /// Regenerate the priced scheduler's calibration table from exact runs and report its
+    /// reliability on held-out seeds.
+    Calibrate(CalibrateArgs),
+}
+
+#[derive(Debug, Args)]
+struct OpenLoopArgs {
+    /// N = 500 only, 3 seeds x 60 frames: seconds.
+    #[arg(long)]
+    quick: bool,
+    /// Body counts, comma separated (default 500,10000).
+    #[arg(long, value_delimiter = ',')]
+    n: Option<Vec<u32>>,
+    /// Seeds 1..=S (default 5).
+    #[arg(long)]
+    seeds: Option<u64>,
+    /// Frames per run at every N (default 1,000 at N = 500, 200 at N = 10,000).
+    #[arg(long)]
+    frames: Option<u32>,
+    /// Worker threads over (N, seed) runs. Wall-clock budgets are timed on a loaded machine when
+    /// this is above 1; the default is 1.
+    #[arg(long, default_value_t = 1)]
+    jobs: usize,
+    /// Output directory.
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+fn open_loop(args: &OpenLoopArgs) -> Result<()> {
+    use foveal_bench::open_loop as ol;
+    let mut cfg = if args.quick {
+        ol::OpenLoopConfig::quick()
+    } else {
+        ol::OpenLoopConfig::standard()
+    };
+    if let Some(n) = &args.n {
+        cfg.ns = n.clone();
+    }
+    if let Some(s) = args.seeds {
+        cfg.seeds = (1..=s.max(1)).collect();
+    }
+    if let Some(f) = args.frames {
+        cfg.frames = cfg.ns.iter().map(|&n| (n, f.max(1))).collect();
+    }
+    if let Some(o) = &args.out {
+        cfg.out = o.clone();
+    }
+    cfg.jobs = args.jobs.max(1);
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    let started = std::time::Instant::now();
+    let runs = ol::run(&cfg).context("open-loop comparison failed")?;
+    let rows = ol::summarise(&cfg, &runs);
+    let load_end = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    let md = format!(
+        "{}\nLoad average at start: {}; at end: {}; wall time {:.0} s.\n",
+        ol::markdown(&cfg, &runs, &rows),
+        load.trim(),
+        load_end.trim(),
+        started.elapsed().as_secs_f64()
+    );
+    std::fs::create_dir_all(&cfg.out).with_context(|| format!("creating {}", cfg.out.display()))?;
+    for (name, text) in [
+        ("open_loop_runs.csv", ol::runs_csv(&cfg, &runs)),
+        ("open_loop_summary.csv", ol::summary_csv(&rows)),
+        ("open_loop_report.md", md.clone()),
+    ] {
+        let path = cfg.out.join(name);
+        std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
+        eprintln!("{}", path.display());
+    }
+    print!("{md}");
+    Ok(())
+}
+
+#[derive(Debug, Args)]
+struct CalibrateArgs {
+    /// Write the table as Rust source here (the engine's
+    /// server/engine/src/schedule/calibration_table.rs); without it only the report is printed.
+    #[arg(long)]
+    write: Option<PathBuf>,
+    /// Write the reliability report (markdown) here as well as to stdout.
+    #[arg(long)]
+    report: Option<PathBuf>,
+}
+
+fn calibrate(args: &CalibrateArgs) -> Result<()> {
+    use foveal_bench::calibrate as cal;
+    let cfg = cal::CalibrateConfig::default();
+    let out = cal::run(&cfg).context("calibration failed")?;
+    let md = cal::markdown(&cfg, &out);
+    print!("{md}");
+    if let Some(path) = &args.report {
+        std::fs::write(path, &md).with_context(|| format!("writing {}", path.display()))?;
+    }
+    if let Some(path) = &args.write {
+        let src = out.calibration.to_rust_source(
+            "cargo run --release -p foveal-bench -- calibrate --write server/engine/src/schedule/calibration_table.rs",
+        );
+        std::fs::write(path, src).with_context(|| format!("writing {}", path.display()))?;
+        eprintln!("wrote {}", path.display());
+    }
+    Ok(())
 }
 
 #[derive(Debug, Args)]
@@ -294,5 +399,7 @@ fn main() -> Result<()> {
         Command::Study(args) => study(args),
         Command::Stress(args) => stress(args),
         Command::Scale(args) => scale(args),
+        Command::OpenLoop(args) => open_loop(args),
+        Command::Calibrate(args) => calibrate(args),
     }
 }

@@ -179,6 +179,9 @@ fn model_name(cfg: &StudyConfig) -> String {
     match cfg.model.function {
         PerceptualFunction::F1 => format!("F1 ({unit})"),
         PerceptualFunction::F2 { c } => format!("F2, C = {c} {unit}"),
+        PerceptualFunction::F2Range { c_min, c_max } => {
+            format!("F2 over C in [{c_min}, {c_max}] {unit}")
+        }
         PerceptualFunction::F3 { .. } => format!("F3 ({unit})"),
     }
 }

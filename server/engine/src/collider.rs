@@ -15,7 +15,7 @@ use crate::narrow_phase::{NarrowPhase, PairState, PairStatus, separation};
 use crate::perception::Viewer;
 use crate::report::{AuditReport, FOVEAL_DEG, FrameReport, PhaseProfile};
 use crate::schedule::calibration::Calibration;
-use crate::schedule::{self, Prioritiser, Priorities, Scheduler, Work};
+use crate::schedule::{self, Needs, Prioritiser, Priorities, Scheduler, Work};
 use crate::sphere_tree::SphereTree;
 use crate::validate::ConfigError;
 use crate::world::World;
@@ -60,8 +60,19 @@ impl Collider {
                 &config.schedule_model,
                 config.eccentricity_threshold_deg,
                 r,
+                schedule::needs(config.scheduler),
             ),
-            foveal: Prioritiser::new(viewer, &config.measure_model, FOVEAL_DEG, r),
+            foveal: Prioritiser::new(
+                viewer,
+                &config.measure_model,
+                FOVEAL_DEG,
+                r,
+                Needs {
+                    inner: true,
+                    weight: false,
+                    bodies_only: false,
+                },
+            ),
             calibration: if config.scheduler == crate::config::SchedulerKind::Priced {
                 Calibration::for_tree(tree, &config.scene)?
             } else {
@@ -132,7 +143,7 @@ impl Collider {
                 &mut meter,
             );
         } else {
-            self.priorities.clear(self.narrow.pairs.len());
+            self.priorities.clear();
         }
         let t1 = clock.now_ns();
         let view = fixation_px.map(|px| FrameView {
@@ -202,7 +213,8 @@ impl Collider {
                 &mut self.foveal_flags,
                 &mut unmetered,
             );
-            for (p, &inner) in self.narrow.pairs.iter().zip(&self.foveal_flags.inner) {
+            for (i, p) in self.narrow.pairs.iter().enumerate() {
+                let inner = self.foveal_flags.inner(i);
                 r.foveal_pairs += u32::from(inner);
                 r.foveal_deemed += u32::from(inner && p.status == PairStatus::Deemed);
             }

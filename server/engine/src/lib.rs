@@ -20,6 +20,8 @@
 //! - [`falloff`]: the models' eccentricity fall-off tabulated for per-pair lookup without libm.
 //! - [`response`]: velocity exchange.
 //! - [`report`]: the frame record, the phase profile and the audit.
+//! - [`collider`]: prioritise, narrow phase, metrics and audit on frames handed in (closed and
+//!   open loop); [`clairvoyant`]: the least true P any schedule could reach with a budget.
 //! - [`simulation`]: one frame of the main loop; [`export`]: a frame as JSON.
 //! - [`soak`]: long-run invariant checks for the stress suite.
 //!
@@ -40,6 +42,7 @@
 
 pub mod broad_phase;
 pub mod budget;
+pub mod clairvoyant;
 pub mod collider;
 pub mod config;
 pub mod export;

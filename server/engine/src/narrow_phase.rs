@@ -32,11 +32,24 @@ impl PairFrame {
     /// pair far from the origin is as exact as one at it.
     #[inline]
     pub fn new(world: &World, a: usize, b: usize) -> Self {
-        let ra = world.basis[a].transpose();
+        let t = Self::translation(world, a, b);
+        Self::with_translation(world, a, b, t)
+    }
+
+    /// The translation alone: B's centre in A's frame. The root test needs only this (the root
+    /// sphere is centred on its body), so the rotation is formed only for pairs that pass it.
+    #[inline]
+    pub fn translation(world: &World, a: usize, b: usize) -> LVec3 {
         let d = (world.position[b] - world.position[a]).as_vec3();
+        world.basis[a].transpose() * LVec3::from(d)
+    }
+
+    /// The frame with a translation already computed by [`Self::translation`].
+    #[inline]
+    pub fn with_translation(world: &World, a: usize, b: usize, t: LVec3) -> Self {
         Self {
-            m: ra * world.basis[b],
-            t: ra * LVec3::from(d),
+            m: world.basis[a].transpose() * world.basis[b],
+            t,
         }
     }
 
@@ -112,7 +125,6 @@ pub struct PairState {
     pub last: [u16; 2],
     list_start: u32,
     list_len: u32,
-    frame: PairFrame,
 }
 
 impl PairState {
@@ -126,10 +138,6 @@ impl PairState {
             last: [NONE, NONE],
             list_start: 0,
             list_len: 0,
-            frame: PairFrame {
-                m: LMat3::IDENTITY,
-                t: LVec3::ZERO,
-            },
         }
     }
 
@@ -196,6 +204,9 @@ const NO_WITNESS: Witness = Witness {
 pub struct NarrowPhase {
     /// Pair states, in broad-phase order.
     pub pairs: Vec<PairState>,
+    /// Relative frame of each pair, index-parallel to `pairs`; written by a pair's first step and
+    /// read only after it, so it is never reset (a frame's reset writes the small states alone).
+    frames: Vec<PairFrame>,
     arena: Vec<[u16; 2]>,
     /// Per body: a partner it collided with last frame and the leaf pair that proved it.
     witness: Vec<Witness>,
@@ -210,6 +221,15 @@ impl NarrowPhase {
         self.pairs.clear();
         self.pairs
             .extend(candidates.iter().map(|&(a, b)| PairState::new(a, b)));
+        if self.frames.len() < self.pairs.len() {
+            self.frames.resize(
+                self.pairs.len(),
+                PairFrame {
+                    m: LMat3::IDENTITY,
+                    t: LVec3::ZERO,
+                },
+            );
+        }
         self.arena.clear();
         self.tests = 0;
     }
@@ -247,25 +267,35 @@ impl NarrowPhase {
         let p = self.pairs[i];
         debug_assert!(p.status.is_open());
         if p.status == PairStatus::Untested {
-            let frame = PairFrame::new(world, p.a as usize, p.b as usize);
+            let (a, b) = (p.a as usize, p.b as usize);
             let root = tree.sphere(0);
-            self.tests += 1;
-            let st = &mut self.pairs[i];
-            st.frame = frame;
-            if let Some(w) = self.witness.get(p.a as usize).filter(|w| w.partner == p.b) {
+            let t = PairFrame::translation(world, a, b);
+            let mut framed = false;
+            if let Some(w) = self.witness.get(a).filter(|w| w.partner == p.b) {
+                let frame = PairFrame::with_translation(world, a, b, t);
+                self.frames[i] = frame;
+                framed = true;
                 let (la, lb) = (
                     tree.sphere(w.leaves[0] as usize),
                     tree.sphere(w.leaves[1] as usize),
                 );
-                self.tests += 1;
+                self.tests += 2;
+                let st = &mut self.pairs[i];
                 if spheres_overlap(la, frame.map(lb), lb.w) {
                     st.last = w.leaves;
                     st.levels = [depth, depth];
                     return resolve(st, PairStatus::Colliding, depth);
                 }
+            } else {
+                self.tests += 1;
             }
-            if !spheres_overlap(root, frame.map(root), root.w) {
+            let st = &mut self.pairs[i];
+            // The root is centred on its body: B's root centre in A's frame is `t` itself.
+            if !spheres_overlap(root, t, root.w) {
                 return resolve(st, PairStatus::Separate, 1);
+            }
+            if !framed {
+                self.frames[i] = PairFrame::with_translation(world, a, b, t);
             }
             st.last = [0, 0];
             st.levels = [1, 1];
@@ -290,7 +320,7 @@ impl NarrowPhase {
             [p.levels[0], p.levels[1] + 1]
         };
         let at_leaves = new_levels[0] == depth && new_levels[1] == depth;
-        let frame = p.frame;
+        let frame = self.frames[i];
         let (lo, hi) = (p.list_start as usize, (p.list_start + p.list_len) as usize);
         // Children are written unconditionally and kept by advancing the cursor only on overlap:
         // overlap outcomes are close to coin flips, and a branch per test would mispredict half
@@ -410,7 +440,7 @@ impl NarrowPhase {
         let sb = tree.sphere(p.last[1] as usize);
         let basis = glam::Mat3::from(world.basis[p.a as usize]).as_dmat3();
         let local_a = LVec3::from_vec4(sa).as_dvec3();
-        let local_b = p.frame.map(sb).as_dvec3();
+        let local_b = self.frames[i].map(sb).as_dvec3();
         let (ca, cb) = (pa + basis * local_a, pa + basis * local_b);
         Evidence {
             center_a: ca,

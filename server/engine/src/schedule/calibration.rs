@@ -68,11 +68,57 @@ fn stages(depth: u8) -> usize {
     2 * depth as usize - 1
 }
 
+/// Distance bucket of a centre distance over the root diameter.
+#[inline]
+pub fn dist_bucket(dist: f32) -> u8 {
+    ((dist.max(0.0) * (DIST_BUCKETS as f32 / DIST_RANGE)) as usize).min(DIST_BUCKETS - 1) as u8
+}
+
+/// Steps of [`dist_bucket_of_squared`]'s table over the squared range.
+const SQUARED_STEPS: usize = 1024;
+
+/// Distance bucket from the *squared* distance over the root diameter, without a square root:
+/// the squared range is cut into fine steps and each step's bucket read from a table. A step is
+/// at most 0.004 wide in squared distance, so a step holds at most one bucket edge (buckets are
+/// 0.125 wide in distance); the edge's side is then decided by one comparison.
+#[inline]
+pub fn dist_bucket_of_squared(d2: f32) -> u8 {
+    const RANGE2: f32 = DIST_RANGE * DIST_RANGE;
+    let k = ((d2.max(0.0) * (SQUARED_STEPS as f32 / RANGE2)) as usize).min(SQUARED_STEPS - 1);
+    let lo = squared_table()[k];
+    // The next bucket starts inside this step if its edge squared is <= d2.
+    let next = lo as usize + 1;
+    if next < DIST_BUCKETS {
+        let edge = next as f32 * (DIST_RANGE / DIST_BUCKETS as f32);
+        if d2 >= edge * edge {
+            return next as u8;
+        }
+    }
+    lo
+}
+
+/// Bucket of the low end of each squared step.
+fn squared_table() -> &'static [u8; SQUARED_STEPS] {
+    static TABLE: std::sync::OnceLock<[u8; SQUARED_STEPS]> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        let mut t = [0u8; SQUARED_STEPS];
+        for (k, v) in t.iter_mut().enumerate() {
+            let d2 = k as f32 * (DIST_RANGE * DIST_RANGE / SQUARED_STEPS as f32);
+            *v = dist_bucket(d2.sqrt());
+        }
+        t
+    })
+}
+
 /// Bin index of a state.
 #[inline]
 fn index(stage: u8, list_key: usize, dist: f32) -> usize {
-    let d = ((dist.max(0.0) * (DIST_BUCKETS as f32 / DIST_RANGE)) as usize).min(DIST_BUCKETS - 1);
-    (stage as usize * LIST_BUCKETS + list_key) * DIST_BUCKETS + d
+    index_bucket(stage, list_key, dist_bucket(dist))
+}
+
+#[inline]
+fn index_bucket(stage: u8, list_key: usize, bucket: u8) -> usize {
+    (stage as usize * LIST_BUCKETS + list_key) * DIST_BUCKETS + bucket as usize
 }
 
 /// The list key of pair `i`: witness flag when untested, else log2 of its overlap list.
@@ -148,6 +194,13 @@ impl Calibration {
     pub fn lookup(&self, np: &NarrowPhase, i: usize, dist: f32) -> &Bin {
         let stage = np.pairs[i].stage().min(stages(self.depth) as u8 - 1);
         &self.bins[index(stage, list_key(np, i), dist)]
+    }
+
+    /// Bin index for pair `i` of `np` in distance bucket `bucket` ([`dist_bucket`]).
+    #[inline]
+    pub fn index_of(&self, np: &NarrowPhase, i: usize, bucket: u8) -> usize {
+        let stage = np.pairs[i].stage().min(stages(self.depth) as u8 - 1);
+        index_bucket(stage, list_key(np, i), bucket)
     }
 
     /// The table as Rust source for `schedule/calibration_table.rs`.
@@ -287,6 +340,15 @@ impl Observations {
         Ok(obs)
     }
 
+    /// Add another set of observations of the same depth (ignored if the depth differs).
+    pub fn merge(&mut self, other: &Observations) {
+        if other.depth == self.depth {
+            for (a, b) in self.sums.iter_mut().zip(&other.sums) {
+                a.add(b);
+            }
+        }
+    }
+
     /// The calibrated table: each bin's frequencies shrunk towards its (stage, list) row, and the
     /// row towards its stage.
     pub fn calibration(&self) -> Calibration {
@@ -413,6 +475,22 @@ mod tests {
         let (rows, brier, ece) = obs.reliability(&cal, 10);
         assert_eq!(rows.len(), 10);
         assert!(brier < 0.25 && ece < 0.1, "brier {brier}, ece {ece}");
+    }
+
+    #[test]
+    fn squared_buckets_equal_the_buckets_of_the_distance() {
+        for k in 0..20_000 {
+            let d = k as f32 * 1e-4;
+            let want = dist_bucket(d);
+            let got = dist_bucket_of_squared(d * d);
+            // Within one float ulp of an edge either side is right.
+            let edge = (d * DIST_BUCKETS as f32 / DIST_RANGE).fract();
+            if edge > 1e-4 && edge < 1.0 - 1e-4 {
+                assert_eq!(got, want, "d = {d}");
+            }
+        }
+        assert_eq!(dist_bucket_of_squared(-1.0), 0);
+        assert_eq!(dist_bucket_of_squared(1e9), DIST_BUCKETS as u8 - 1);
     }
 
     #[test]

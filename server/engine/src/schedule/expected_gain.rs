@@ -68,7 +68,8 @@ impl Scheduler for ExpectedGain {
             return round_robin(np, &mut self.fallback, work, meter);
         };
         self.heap.clear();
-        for (i, &w) in work.priorities.weight.iter().enumerate() {
+        for i in 0..np.pairs.len() {
+            let w = work.priorities.weight(i);
             self.heap.push(Entry {
                 gain: w / price(np, i),
                 pair: i as u32,

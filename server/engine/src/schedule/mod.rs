@@ -15,7 +15,7 @@ mod sequential;
 
 pub use expected_gain::ExpectedGain;
 pub use priced::{Priced, PricedOptions};
-pub use priority::{Prioritiser, Priorities};
+pub use priority::{Needs, Prioritiser, Priorities};
 pub use priority_queue::PriorityQueue;
 pub use round_robin::RoundRobin;
 pub use sequential::Sequential;
@@ -105,12 +105,29 @@ pub(crate) fn sequential(
 }
 
 /// Sort pair indices by priority, highest first; ties keep broad-phase order (deterministic).
-pub(crate) fn sort_by_priority(weight: &[f32], queue: &mut [u32]) {
+pub(crate) fn sort_by_priority(pr: &Priorities, queue: &mut [u32]) {
     queue.sort_by(|&x, &y| {
-        weight[y as usize]
-            .total_cmp(&weight[x as usize])
+        pr.weight(y as usize)
+            .total_cmp(&pr.weight(x as usize))
             .then(x.cmp(&y))
     });
+}
+
+/// What prioritisation must compute for `kind`'s scheduler.
+pub fn needs(kind: SchedulerKind) -> Needs {
+    Needs {
+        inner: matches!(
+            kind,
+            SchedulerKind::PriorityOnly | SchedulerKind::PrioritySorted
+        ),
+        weight: matches!(
+            kind,
+            SchedulerKind::SortedSequential
+                | SchedulerKind::PrioritySorted
+                | SchedulerKind::ExpectedGain
+        ),
+        bodies_only: kind == SchedulerKind::Priced,
+    }
 }
 
 #[cfg(test)]

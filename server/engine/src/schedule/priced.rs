@@ -18,7 +18,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::calibration::Bin;
+use super::calibration::{self, Bin};
 use super::{Scheduler, Work};
 use crate::budget::Meter;
 use crate::config::SchedulerKind;
@@ -106,11 +106,11 @@ impl BucketQueue {
 
     #[inline]
     fn key(value: f32) -> usize {
-        // Positive finite floats order like their bits; NaN and negatives go to the bottom.
-        if value.is_nan() || value <= 0.0 {
-            0
-        } else {
+        // Positive floats order like their bits; NaN, zero and negatives go to the bottom.
+        if value > 0.0 {
             ((value.to_bits() >> 21) as usize).min(BUCKETS - 1)
+        } else {
+            0
         }
     }
 
@@ -150,6 +150,10 @@ pub struct Priced {
     queue: BucketQueue,
     /// Per pair: fall-off times scale, the state-independent part of its value.
     weight: Vec<f32>,
+    /// Per pair: its centre-distance bucket.
+    dist: Vec<u8>,
+    /// Per calibration bin: value per unit weight (gain over price, by the switches).
+    ratio: Vec<f32>,
 }
 
 impl Priced {
@@ -183,22 +187,39 @@ impl Scheduler for Priced {
         let cal = work.calibration;
         self.queue.clear();
         self.weight.clear();
+        self.dist.clear();
+        if self.ratio.len() != cal.bins().len() {
+            self.ratio = cal.bins().iter().map(|b| self.value(1.0, b)).collect();
+        }
         let gaze = self.options.gaze && work.view.is_some();
-        self.weight.extend(
-            pr.scale
-                .iter()
-                .zip(&pr.falloff)
-                .map(|(&s, &f)| if gaze { s * f } else { s }),
-        );
+        let inv_d2 = (0.25 / (work.tree.root_radius() * work.tree.root_radius())) as f32;
+        let records = pr.body_records();
+        // Price every pair from per-body records: the weight at the pair is the mean of its two
+        // bodies' (a few degrees apart at most), and the squared centre distance keys the
+        // calibrated state. One pass, no per-pair projection, division or square root.
         for i in 0..np.pairs.len() {
-            // Pairs prioritisation did not reach (a wall-clock deadline) have no distance yet:
-            // they go last, in order.
-            let v = if i < pr.reached {
-                self.value(self.weight[i], cal.lookup(np, i, pr.dist[i]))
-            } else {
-                0.0
+            let (a, b) = (np.pairs[i].a as usize, np.pairs[i].b as usize);
+            let (w, d2) = match (records.get(a), records.get(b)) {
+                (Some(ra), Some(rb)) => {
+                    let d = [rb[0] - ra[0], rb[1] - ra[1], rb[2] - ra[2]];
+                    let w = if gaze {
+                        0.5 * (ra[3] + rb[3])
+                    } else {
+                        0.5 * (pr.body_scale(a) + pr.body_scale(b))
+                    };
+                    (w, (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * inv_d2)
+                }
+                // No body pass (a deadline cut it short): distances from the world, no weight.
+                _ => {
+                    let d = work.world.position[b] - work.world.position[a];
+                    (1.0, d.length_squared() as f32 * inv_d2)
+                }
             };
-            self.queue.push(v, i as u32);
+            let bucket = calibration::dist_bucket_of_squared(d2);
+            self.weight.push(w);
+            self.dist.push(bucket);
+            let k = cal.index_of(np, i, bucket);
+            self.queue.push(w * self.ratio[k], i as u32);
         }
         while let Some(pair) = self.queue.pop() {
             if meter.exhausted(np.tests) {
@@ -206,9 +227,8 @@ impl Scheduler for Priced {
             }
             let i = pair as usize;
             if np.step(i, work.tree, work.world) == StepOutcome::Active {
-                let dist = pr.dist.get(i).copied().unwrap_or(0.0);
-                let v = self.value(self.weight[i], cal.lookup(np, i, dist));
-                self.queue.push(v, pair);
+                let k = cal.index_of(np, i, self.dist[i]);
+                self.queue.push(self.weight[i] * self.ratio[k], pair);
             }
         }
         debug_assert_eq!(self.queue.len, 0);

@@ -26,40 +26,99 @@ struct BodyView {
     px: [f32; 2],
     /// Unit ray from the eye to the body's screen position.
     ray: [f32; 3],
+    /// The model's gap unit per scene unit at the body (pixels or degrees per unit length).
+    scale: f32,
 }
 
-/// Per-pair inputs of the schedulers, index-parallel to the narrow phase's pairs.
+/// What a scheduler needs from prioritisation beyond distances, scales and fall-offs.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Needs {
+    /// The priority-queue split (exact against the threshold angle).
+    pub inner: bool,
+    /// The paper's weight F(g', e) on the untested evidence.
+    pub weight: bool,
+    /// Per-body values only ([`Priorities::body_falloff`], [`Priorities::body_scale`]): the
+    /// scheduler prices pairs itself, so no per-pair pass is made here.
+    pub bodies_only: bool,
+}
+
+/// Per-pair inputs of the schedulers, index-parallel to the narrow phase's pairs. Only the first
+/// [`Self::reached`] entries are this frame's; the accessors answer the no-priority defaults
+/// beyond them, so a frame that does not prioritise costs nothing here.
 #[derive(Debug, Clone, Default)]
 pub struct Priorities {
-    /// F of the scheduling model on the pair's untested evidence (body centres): the paper's
-    /// priority, higher first. 0 for pairs prioritisation did not reach.
-    pub weight: Vec<f32>,
-    /// Eccentricity fall-off F(1, e) at the pair's centre (1 for every pair without a fixation).
-    pub falloff: Vec<f32>,
-    /// The model's gap unit per scene unit at the pair (pixels or degrees per unit length).
-    pub scale: Vec<f32>,
-    /// Centre distance over twice the root radius: 1 is where the root spheres touch.
-    pub dist: Vec<f32>,
-    /// Inside the priority-queue eccentricity threshold.
-    pub inner: Vec<bool>,
-    /// Pairs prioritised this frame (the rest were cut off by a wall-clock deadline).
+    weight: Vec<f32>,
+    falloff: Vec<f32>,
+    scale: Vec<f32>,
+    dist: Vec<f32>,
+    inner: Vec<bool>,
+    /// Pairs prioritised this frame (the rest were cut off by a wall-clock deadline, or the frame
+    /// was not prioritised at all).
     pub reached: usize,
+    /// Whether this frame's per-body values are complete.
+    pub bodies_done: bool,
     body: Vec<BodyView>,
+    body_falloff: Vec<f32>,
+    /// Per body, for schedulers that price pairs themselves: position relative to the volume's
+    /// corner (f32: the volume is at most ~60 units wide) and scale times fall-off.
+    body_record: Vec<[f32; 4]>,
 }
 
 impl Priorities {
-    /// No priorities for `n` pairs: every weight 0, every fall-off 1, no pair in the first queue
-    /// (for schedulers that do not prioritise, or frames without a fixation).
-    pub fn clear(&mut self, n: usize) {
-        for v in [&mut self.weight, &mut self.scale, &mut self.dist] {
-            v.clear();
-            v.resize(n, 0.0);
-        }
-        self.falloff.clear();
-        self.falloff.resize(n, 1.0);
-        self.inner.clear();
-        self.inner.resize(n, false);
+    /// Forget this frame's priorities: every pair reads as not prioritised.
+    pub fn clear(&mut self) {
         self.reached = 0;
+        self.bodies_done = false;
+    }
+
+    /// Eccentricity fall-off at body `b`'s centre (1 without a fixation or before the body pass).
+    #[inline]
+    pub fn body_falloff(&self, b: usize) -> f32 {
+        if self.bodies_done { self.body_falloff[b] } else { 1.0 }
+    }
+
+    /// Per-body records of the last body pass: position relative to the volume corner, and the
+    /// body's scale times its fall-off (scale alone with `gaze` off). Empty before the pass.
+    #[inline]
+    pub fn body_records(&self) -> &[[f32; 4]] {
+        if self.bodies_done { &self.body_record } else { &[] }
+    }
+
+    /// The model's gap unit per scene unit at body `b` (1 before the body pass).
+    #[inline]
+    pub fn body_scale(&self, b: usize) -> f32 {
+        if self.bodies_done { self.body[b].scale } else { 1.0 }
+    }
+
+    /// F of the scheduling model on pair `i`'s untested evidence (body centres): the paper's
+    /// priority, higher first; 0 if not prioritised.
+    #[inline]
+    pub fn weight(&self, i: usize) -> f32 {
+        if i < self.reached { self.weight[i] } else { 0.0 }
+    }
+
+    /// Eccentricity fall-off F(1, e) at pair `i`'s centre; 1 without a fixation.
+    #[inline]
+    pub fn falloff(&self, i: usize) -> f32 {
+        if i < self.reached { self.falloff[i] } else { 1.0 }
+    }
+
+    /// The model's gap unit per scene unit at pair `i` (pixels or degrees per unit length).
+    #[inline]
+    pub fn scale(&self, i: usize) -> f32 {
+        if i < self.reached { self.scale[i] } else { 0.0 }
+    }
+
+    /// Centre distance of pair `i` over twice the root radius: 1 is where the root spheres touch.
+    #[inline]
+    pub fn dist(&self, i: usize) -> f32 {
+        if i < self.reached { self.dist[i] } else { 0.0 }
+    }
+
+    /// Whether pair `i` is inside the priority-queue eccentricity threshold.
+    #[inline]
+    pub fn inner(&self, i: usize) -> bool {
+        i < self.reached && self.inner[i]
     }
 }
 
@@ -67,34 +126,37 @@ impl Priorities {
 #[derive(Debug, Clone)]
 pub struct Prioritiser {
     falloff: Falloff,
+    needs: Needs,
     threshold_chord: f64,
     pitch: f64,
     centre: [f64; 2],
     distance: f64,
     /// Pixels per scene unit at depth 1 (the camera's focal length in pixels).
-    focal: f32,
+    focal: f64,
     eye: Vec3,
     inv_root_diameter: f32,
 }
 
 impl Prioritiser {
-    /// For `viewer`, scheduling `model`, a first queue within `threshold_deg`, and sphere trees
-    /// whose root has radius `root_radius`.
+    /// For `viewer`, scheduling `model`, a first queue within `threshold_deg`, sphere trees whose
+    /// root has radius `root_radius`, and a scheduler that needs `needs`.
     pub fn new(
         viewer: &Viewer,
         model: &crate::perception::PerceptualModel,
         threshold_deg: f64,
         root_radius: f64,
+        needs: Needs,
     ) -> Self {
         let d = &viewer.display;
         let half = (0.5 * threshold_deg.clamp(0.0, 180.0)).to_radians();
         Self {
             falloff: Falloff::new(model),
+            needs,
             threshold_chord: 2.0 * half.sin(),
             pitch: d.pixel_pitch_cm(),
             centre: [0.5 * f64::from(d.width_px), 0.5 * f64::from(d.height_px)],
             distance: d.viewing_distance_cm,
-            focal: viewer.focal_px() as f32,
+            focal: viewer.focal_px(),
             eye: viewer.eye,
             inv_root_diameter: (0.5 / root_radius) as f32,
         }
@@ -113,16 +175,26 @@ impl Prioritiser {
         [v[0] * inv, v[1] * inv, v[2] * inv]
     }
 
+    /// Screen position, eye ray and scale of a world point: one division and one square root.
     #[inline]
-    fn ray(&self, px: [f32; 2]) -> [f32; 3] {
-        let (pitch, distance) = (self.pitch as f32, self.distance as f32);
-        let v = [
-            (px[0] - self.centre[0] as f32) * pitch,
-            (px[1] - self.centre[1] as f32) * pitch,
-            distance,
-        ];
+    fn body_view(&self, p: Vec3) -> BodyView {
+        let r = p - self.eye;
+        let depth = (-r.z).max(1e-9 * (1.0 + r.x.abs() + r.y.abs()));
+        let s = self.focal / depth;
+        let (dx, dy) = ((r.x * s) as f32, (-r.y * s) as f32);
+        let px = [self.centre[0] as f32 + dx, self.centre[1] as f32 + dy];
+        let (pitch, dist) = (self.pitch as f32, self.distance as f32);
+        let v = [dx * pitch, dy * pitch, dist];
         let inv = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        [v[0] * inv, v[1] * inv, v[2] * inv]
+        let ray = [v[0] * inv, v[1] * inv, v[2] * inv];
+        let scale = match self.falloff.unit() {
+            // A degree per pixel shrinks as cos^2 of the angle off the screen's axis.
+            EccentricityUnit::Degrees => {
+                s as f32 * (pitch / dist) * ray[2] * ray[2] * 57.295_78
+            }
+            EccentricityUnit::Pixels => s as f32,
+        };
+        BodyView { px, ray, scale }
     }
 
     /// The lookup argument between two screen points: the chord of their eye rays (degrees unit)
@@ -135,19 +207,10 @@ impl Prioritiser {
         }
     }
 
-    fn view_of(&self, viewer: &Viewer, p: Vec3) -> BodyView {
-        let s = viewer.project(p);
-        let px = [s[0] as f32, s[1] as f32];
-        BodyView {
-            px,
-            ray: self.ray(px),
-        }
-    }
-
-    /// Fill `out` for `pairs`. With a fixation (pixels), weights, fall-offs and the first queue
-    /// follow it; without one every fall-off is 1 and no pair is in the first queue. Checks a
-    /// wall-clock deadline every 64 pairs and stops when it has passed: pairs not reached keep
-    /// weight 0 and stay in the second queue, so a budget smaller than prioritisation is still held.
+    /// Fill `out` for `pairs`. With a fixation (pixels), fall-offs (and, if needed, weights and
+    /// the first queue) follow it; without one every fall-off is 1 and no pair is in the first
+    /// queue. Checks a wall-clock deadline every 64 pairs and stops when it has passed: pairs not
+    /// reached read as unprioritised, so a budget smaller than prioritisation is still held.
     pub fn prioritise(
         &self,
         pairs: &[PairState],
@@ -158,68 +221,110 @@ impl Prioritiser {
         meter: &mut Meter<'_>,
     ) {
         let n = pairs.len();
-        for v in [&mut out.weight, &mut out.falloff, &mut out.scale, &mut out.dist] {
-            v.clear();
-            v.resize(n, 0.0);
-        }
-        out.inner.clear();
-        out.inner.resize(n, false);
         out.reached = 0;
-        out.body.clear();
-        out.body
-            .extend(world.position.iter().map(|&p| self.view_of(viewer, p)));
+        out.bodies_done = false;
+        for v in [&mut out.weight, &mut out.falloff, &mut out.scale, &mut out.dist] {
+            if v.len() < n {
+                v.resize(n, 0.0);
+            }
+        }
+        if out.inner.len() < n {
+            out.inner.resize(n, false);
+        }
         let fix = fixation_px.map(|f| {
             let px = [f[0] as f32, f[1] as f32];
+            let r = self.ray64(f);
             let view = BodyView {
                 px,
-                ray: self.ray(px),
+                ray: [r[0] as f32, r[1] as f32, r[2] as f32],
+                scale: 0.0,
             };
-            (view, self.ray64(f))
+            (view, r)
         });
+        out.body.clear();
+        out.body
+            .extend(world.position.iter().map(|&p| self.body_view(p)));
+        out.body_falloff.clear();
+        match &fix {
+            Some((f, _)) => {
+                let body_falloff = out.body.iter().map(|v| self.falloff.factor(self.arg(v, f)));
+                out.body_falloff.extend(body_falloff);
+            }
+            None => out.body_falloff.resize(out.body.len(), 1.0),
+        }
+        if meter.exhausted_by_clock() {
+            return;
+        }
+        if self.needs.bodies_only {
+            let lo = world.lo;
+            out.body_record.clear();
+            out.body_record.extend(
+                world
+                    .position
+                    .iter()
+                    .zip(&out.body)
+                    .zip(&out.body_falloff)
+                    .map(|((&p, v), &f)| {
+                        let r = (p - lo).as_vec3();
+                        [r.x, r.y, r.z, v.scale * f]
+                    }),
+            );
+            out.bodies_done = true;
+            return;
+        }
+        out.bodies_done = true;
         let degrees = self.falloff.unit() == EccentricityUnit::Degrees;
+        let Priorities {
+            weight,
+            falloff,
+            scale,
+            dist,
+            inner,
+            body,
+            reached,
+            ..
+        } = out;
         for (k, p) in pairs.iter().enumerate() {
             // Sphere-test budgets do not count this work (it tests no spheres).
-            if k % 64 == 0 && meter.exhausted_by_clock() {
+            if k % 64 == 0 && k > 0 && meter.exhausted_by_clock() {
                 return;
             }
             let (a, b) = (p.a as usize, p.b as usize);
             let (pa, pb) = (world.position[a], world.position[b]);
-            let centre_3d = (pa + pb) * 0.5;
-            let d = (pb - pa).length() as f32;
-            out.dist[k] = d * self.inv_root_diameter;
-            // Scale: the screen size of a unit length at the pair's depth, in the model's unit
-            // (a degree per pixel shrinks as cos^2 of the angle off the screen's axis).
-            let depth = ((self.eye.z - centre_3d.z) as f32).max(1e-9);
-            let px_per_unit = self.focal / depth;
-            let (va, vb) = (&out.body[a], &out.body[b]);
-            let g_arg = self.arg(va, vb);
-            let c_px = viewer.project(centre_3d);
-            let c = BodyView {
-                px: [c_px[0] as f32, c_px[1] as f32],
-                ray: self.ray([c_px[0] as f32, c_px[1] as f32]),
-            };
-            let scale = if degrees {
-                let cos = c.ray[2];
-                px_per_unit * (self.pitch / self.distance) as f32 * cos * cos * 57.295_78
+            dist[k] = (pb - pa).as_vec3().length() * self.inv_root_diameter;
+            let (va, vb) = (&body[a], &body[b]);
+            scale[k] = 0.5 * (va.scale + vb.scale);
+            if let Some((f, f_ray)) = &fix {
+                // The centre's eye ray, unnormalised: two bodies of one pair are a few degrees
+                // apart, and the half-sum's length is off 1 by under 1e-3 of the chord there.
+                let e_arg = if degrees {
+                    let m = [
+                        0.5 * (va.ray[0] + vb.ray[0]) - f.ray[0],
+                        0.5 * (va.ray[1] + vb.ray[1]) - f.ray[1],
+                        0.5 * (va.ray[2] + vb.ray[2]) - f.ray[2],
+                    ];
+                    (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]).sqrt()
+                } else {
+                    (0.5 * (va.px[0] + vb.px[0]) - f.px[0])
+                        .hypot(0.5 * (va.px[1] + vb.px[1]) - f.px[1])
+                };
+                let fo = self.falloff.factor(e_arg);
+                falloff[k] = fo;
+                if self.needs.weight {
+                    weight[k] = fo * self.falloff.eccentricity(self.arg(va, vb));
+                }
+                if self.needs.inner {
+                    let c = viewer.project((pa + pb) * 0.5);
+                    inner[k] = chord64(self.ray64(c), *f_ray) <= self.threshold_chord;
+                }
             } else {
-                px_per_unit
-            };
-            out.scale[k] = scale;
-            let gap = self.falloff.eccentricity(g_arg);
-            match &fix {
-                Some((f, f_ray)) => {
-                    let e_arg = self.arg(&c, f);
-                    let fo = self.falloff.factor(e_arg);
-                    out.falloff[k] = fo;
-                    out.weight[k] = fo * gap;
-                    out.inner[k] = chord64(self.ray64(c_px), *f_ray) <= self.threshold_chord;
+                falloff[k] = 1.0;
+                if self.needs.weight {
+                    weight[k] = self.falloff.eccentricity(self.arg(va, vb));
                 }
-                None => {
-                    out.falloff[k] = 1.0;
-                    out.weight[k] = gap;
-                }
+                inner[k] = false;
             }
-            out.reached = k + 1;
+            *reached = k + 1;
         }
     }
 }

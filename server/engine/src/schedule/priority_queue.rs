@@ -39,15 +39,15 @@ impl Scheduler for PriorityQueue {
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
         self.inner.clear();
         self.outer.clear();
-        for (i, &inner) in work.priorities.inner.iter().enumerate() {
-            if inner {
+        for i in 0..np.pairs.len() {
+            if work.priorities.inner(i) {
                 self.inner.push(i as u32)
             } else {
                 self.outer.push(i as u32)
             }
         }
         if self.sorted {
-            sort_by_priority(&work.priorities.weight, &mut self.inner);
+            sort_by_priority(work.priorities, &mut self.inner);
             sequential(np, &self.inner, work, meter);
         } else {
             round_robin(np, &mut self.inner, work, meter);

@@ -37,7 +37,7 @@ impl Scheduler for Sequential {
         self.queue.clear();
         self.queue.extend(0..np.pairs.len() as u32);
         if self.sorted && work.view.is_some() {
-            sort_by_priority(&work.priorities.weight, &mut self.queue);
+            sort_by_priority(work.priorities, &mut self.queue);
         }
         sequential(np, &self.queue, work, meter);
     }

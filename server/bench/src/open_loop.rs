@@ -1,0 +1,714 @@
+//! Open-loop comparison of schedulers (DESIGN.md "Open-loop protocol"): one exact run of the paper
+//! scene gives the frames, and every scheduler and budget is evaluated on exactly those frames, each
+//! against the clairvoyant bound of that frame.
+//!
+//! Per frame of the exact run, every candidate pair is settled once to learn its truth (collides or
+//! not, its true gap, its exact cost). A scheduler's true P is then the sum of the true weights of
+//! the pairs it deemed, which is what the audit computes, without re-running the audit per
+//! scheduler. The bound at a budget is the fractional-knapsack optimum over the same truths
+//! ([`foveal_engine::clairvoyant`]); since a sphere-test budget may be overrun by the last step, the
+//! bound of a frame is taken at the most tests any scheduler of that budget actually used.
+//!
+//! Budgets are in sphere tests, as fractions of the frame's exact cost (deterministic), and in
+//! wall-clock time, as fractions of the median exact narrow-phase time of the scene measured before
+//! the recorded frames (machine-dependent; prioritisation is inside that budget). Wall-clock
+//! schedulers run in a rotating order so none is always first into a cold cache.
+//!
+//! A condition fixes the scheduling model, the measuring model and what the scheduler is told about
+//! the gaze: the viewer's fixation, or the screen centre (a control: the same viewer, measured at
+//! the true fixation, with a scheduler that has no eye tracker).
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use foveal_engine::clairvoyant::{self, PairTruth};
+use foveal_engine::collider::Collider;
+use foveal_engine::fixation::FrameView;
+use foveal_engine::schedule::PricedOptions;
+use foveal_engine::{
+    BudgetSpec, Clock, EccentricityUnit, Fixation, FrameBudget, FrameReport, FrozenClock,
+    PerceptualFunction, PerceptualModel, PhaseProfile, SceneConfig, SchedulerKind, SimConfig,
+    Simulation,
+};
+
+use crate::BenchError;
+use crate::gaze::ScriptedGaze;
+use crate::runner::InstantClock;
+use crate::stats::MeanCi;
+
+/// A scheduler under test: a kind and, for the priced one, its ablation switches.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SchedulerSpec {
+    /// Label in tables.
+    pub label: String,
+    /// The scheduler.
+    pub kind: SchedulerKind,
+    /// Priced-scheduler switches.
+    pub priced: PricedOptions,
+}
+
+impl SchedulerSpec {
+    /// A scheduler with default switches, labelled by its name.
+    pub fn plain(kind: SchedulerKind) -> Self {
+        Self {
+            label: kind.name().into(),
+            kind,
+            priced: PricedOptions::default(),
+        }
+    }
+
+    /// The priced scheduler with these switches, labelled by them.
+    pub fn priced(options: PricedOptions) -> Self {
+        Self {
+            label: options.label(),
+            kind: SchedulerKind::Priced,
+            priced: options,
+        }
+    }
+}
+
+/// What the scheduler is told about the gaze.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GazeFeed {
+    /// The viewer's fixation (as the measurement uses).
+    Viewer,
+    /// Always the screen centre: no eye tracker.
+    Centre,
+}
+
+/// One experimental condition.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Condition {
+    /// Label in tables.
+    pub name: String,
+    /// Model the schedulers rank with.
+    pub schedule_model: PerceptualModel,
+    /// Model true P is measured with.
+    pub measure_model: PerceptualModel,
+    /// What the schedulers are told about the gaze.
+    pub feed: GazeFeed,
+    /// Schedulers run in this condition (round-robin is always among them).
+    pub schedulers: Vec<SchedulerSpec>,
+}
+
+/// A budget of the comparison.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Budget {
+    /// Sphere tests: this fraction of the frame's exact cost.
+    Tests(f64),
+    /// Wall clock: this fraction of the scene's median exact narrow-phase time.
+    Wall(f64),
+}
+
+impl Budget {
+    /// `tests=0.1` or `wall=0.333`.
+    pub fn label(&self) -> String {
+        match self {
+            Self::Tests(f) => format!("tests={f}"),
+            Self::Wall(f) => format!("wall={f:.3}"),
+        }
+    }
+}
+
+/// The comparison to run.
+#[derive(Debug, Clone)]
+pub struct OpenLoopConfig {
+    /// Body counts.
+    pub ns: Vec<u32>,
+    /// Seeds (paired: every scheduler sees the same frames per seed).
+    pub seeds: Vec<u64>,
+    /// Recorded frames per run, by N: `frames(n)`.
+    pub frames: Vec<(u32, u32)>,
+    /// Unrecorded exact frames first (the random start has deep overlaps).
+    pub warmup: u32,
+    /// Exact frames timed, before the recorded ones, for the wall-clock budgets.
+    pub timing_frames: u32,
+    /// Budgets.
+    pub budgets: Vec<Budget>,
+    /// Conditions.
+    pub conditions: Vec<Condition>,
+    /// Worker threads over (N, seed) runs.
+    pub jobs: usize,
+    /// Output directory.
+    pub out: PathBuf,
+}
+
+/// F2 in degrees with fall-off constant `c`.
+pub fn f2(c: f64) -> PerceptualModel {
+    PerceptualModel {
+        function: PerceptualFunction::F2 { c },
+        unit: EccentricityUnit::Degrees,
+    }
+}
+
+/// F2 averaged over C in [lo, hi] degrees.
+pub fn f2_range(lo: f64, hi: f64) -> PerceptualModel {
+    PerceptualModel {
+        function: PerceptualFunction::F2Range {
+            c_min: lo,
+            c_max: hi,
+        },
+        unit: EccentricityUnit::Degrees,
+    }
+}
+
+fn model_label(m: &PerceptualModel) -> String {
+    match m.function {
+        PerceptualFunction::F2 { c } => format!("C={c}"),
+        PerceptualFunction::F2Range { c_min, c_max } => format!("C={c_min}..{c_max}"),
+        PerceptualFunction::F1 => "F1".into(),
+        PerceptualFunction::F3 { .. } => "F3".into(),
+    }
+}
+
+impl OpenLoopConfig {
+    /// The default protocol: N = 500 and 10,000, 5 seeds, sphere-test budgets 0.005-0.3 and
+    /// wall-clock budgets 1/30, 1/10, 1/3; F2 with C = 5 and 1 degrees, each with the viewer's gaze
+    /// and the screen-centre control, every scheduler and the priced ablations; and model
+    /// mismatch (scheduled with C in {1, 2, 5} or the range 1-10, measured with the others).
+    pub fn standard() -> Self {
+        let mut all: Vec<SchedulerSpec> = [
+            SchedulerKind::RoundRobin,
+            SchedulerKind::PriorityOnly,
+            SchedulerKind::PrioritySorted,
+            SchedulerKind::ExpectedGain,
+            SchedulerKind::Priced,
+        ]
+        .into_iter()
+        .map(SchedulerSpec::plain)
+        .collect();
+        for off in 0..3 {
+            all.push(SchedulerSpec::priced(PricedOptions {
+                probability: off != 0,
+                cost: off != 1,
+                gaze: off != 2,
+            }));
+        }
+        let mut conditions = Vec::new();
+        for c in [5.0, 1.0] {
+            for feed in [GazeFeed::Viewer, GazeFeed::Centre] {
+                let suffix = if feed == GazeFeed::Centre {
+                    ", centre-fed"
+                } else {
+                    ""
+                };
+                conditions.push(Condition {
+                    name: format!("C={c}{suffix}"),
+                    schedule_model: f2(c),
+                    measure_model: f2(c),
+                    feed,
+                    schedulers: if feed == GazeFeed::Viewer {
+                        all.clone()
+                    } else {
+                        vec![
+                            SchedulerSpec::plain(SchedulerKind::RoundRobin),
+                            SchedulerSpec::plain(SchedulerKind::PriorityOnly),
+                            SchedulerSpec::plain(SchedulerKind::Priced),
+                        ]
+                    },
+                });
+            }
+        }
+        let pair = vec![
+            SchedulerSpec::plain(SchedulerKind::RoundRobin),
+            SchedulerSpec::plain(SchedulerKind::Priced),
+        ];
+        let scheds = [f2(1.0), f2(2.0), f2(5.0), f2_range(1.0, 10.0)];
+        for s in scheds {
+            for m in [1.0, 2.0, 5.0] {
+                if s == f2(m) {
+                    continue;
+                }
+                conditions.push(Condition {
+                    name: format!("sched {} / measure C={m}", model_label(&s)),
+                    schedule_model: s,
+                    measure_model: f2(m),
+                    feed: GazeFeed::Viewer,
+                    schedulers: pair.clone(),
+                });
+            }
+        }
+        let mut budgets: Vec<Budget> = [0.005, 0.01, 0.03, 0.1, 0.3]
+            .into_iter()
+            .map(Budget::Tests)
+            .collect();
+        budgets.extend([1.0 / 30.0, 0.1, 1.0 / 3.0].into_iter().map(Budget::Wall));
+        Self {
+            ns: vec![500, 10_000],
+            seeds: (1..=5).collect(),
+            frames: vec![(500, 1_000), (10_000, 200)],
+            warmup: 60,
+            timing_frames: 30,
+            budgets,
+            conditions,
+            jobs: 1,
+            out: PathBuf::from("results/open-loop"),
+        }
+    }
+
+    /// A seconds-long version of [`Self::standard`]: N = 500, 3 seeds, 60 frames.
+    pub fn quick() -> Self {
+        Self {
+            ns: vec![500],
+            seeds: (1..=3).collect(),
+            frames: vec![(500, 60)],
+            warmup: 30,
+            timing_frames: 10,
+            out: PathBuf::from("results/open-loop-quick"),
+            ..Self::standard()
+        }
+    }
+
+    fn frames_for(&self, n: u32) -> u32 {
+        self.frames
+            .iter()
+            .find(|(m, _)| *m == n)
+            .or(self.frames.last())
+            .map_or(100, |&(_, f)| f)
+    }
+}
+
+/// Sums over the frames of one run for one (condition, budget, scheduler).
+#[derive(Debug, Clone, Copy, Default)]
+struct Cell {
+    true_p: f64,
+    tests: f64,
+    prioritise_ms: f64,
+}
+
+/// Per-run result: mean per frame of every cell, the bound and all-deemed P.
+#[derive(Debug, Clone)]
+pub struct RunResult {
+    /// Bodies.
+    pub n: u32,
+    /// Seed.
+    pub seed: u64,
+    /// Frames recorded.
+    pub frames: u32,
+    /// Median exact narrow-phase time of the scene (ms).
+    pub exact_narrow_ms: f64,
+    /// Mean exact cost (sphere tests per frame).
+    pub exact_tests: f64,
+    /// `[condition][budget][scheduler]`: (mean true P, mean tests, mean prioritise ms).
+    cells: Vec<Vec<Vec<Cell>>>,
+    /// `[condition][budget]`: mean bound.
+    bound: Vec<Vec<f64>>,
+    /// `[condition]`: mean true P with every pair deemed.
+    all_deemed: Vec<f64>,
+}
+
+fn sim_config(n: u32, seed: u64) -> SimConfig {
+    SimConfig {
+        scene: SceneConfig::paper(n, seed),
+        budget: BudgetSpec::Exact,
+        scheduler: SchedulerKind::Sequential,
+        ..SimConfig::default()
+    }
+}
+
+/// Run one (N, seed).
+pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, BenchError> {
+    let mut source = Simulation::new(sim_config(n, seed))?;
+    let mut gaze = ScriptedGaze::new(seed);
+    let dt = source.config().scene.dt;
+    let clock = InstantClock::new();
+    for _ in 0..cfg.warmup {
+        source.step(None, &FrozenClock);
+    }
+    // Colliders: one per (condition, budget, scheduler), plus one exact collider for timing.
+    let mut exact = Collider::new(&sim_config(n, seed), source.tree(), source.viewer())?;
+    let mut colliders: Vec<Vec<Vec<Collider>>> = Vec::new();
+    for c in &cfg.conditions {
+        let mut per_budget = Vec::new();
+        for _ in &cfg.budgets {
+            let mut v = Vec::new();
+            for s in &c.schedulers {
+                let sc = SimConfig {
+                    scheduler: s.kind,
+                    priced: s.priced,
+                    schedule_model: c.schedule_model,
+                    measure_model: c.measure_model,
+                    ..sim_config(n, seed)
+                };
+                v.push(Collider::new(&sc, source.tree(), source.viewer())?);
+            }
+            per_budget.push(v);
+        }
+        colliders.push(per_budget);
+    }
+    // Time the exact narrow phase on frames before the recorded ones.
+    let mut times = Vec::new();
+    for _ in 0..cfg.timing_frames.max(1) {
+        source.step(None, &FrozenClock);
+        let mut r = FrameReport::default();
+        let mut p = PhaseProfile::default();
+        exact.collide(
+            &source.frame_input(),
+            None,
+            FrameBudget::Unlimited,
+            &clock,
+            &mut r,
+            &mut p,
+        );
+        times.push(p.prioritise_ns + p.narrow_ns);
+    }
+    times.sort_unstable();
+    let exact_ns = times[times.len() / 2] as f64;
+
+    let frames = cfg.frames_for(n);
+    let nc = cfg.conditions.len();
+    let nb = cfg.budgets.len();
+    let mut cells: Vec<Vec<Vec<Cell>>> = cfg
+        .conditions
+        .iter()
+        .map(|c| vec![vec![Cell::default(); c.schedulers.len()]; nb])
+        .collect();
+    let mut bound = vec![vec![0.0; nb]; nc];
+    let mut all_deemed = vec![0.0; nc];
+    let mut truths: Vec<PairTruth> = Vec::new();
+    let mut weights: Vec<f64> = Vec::new();
+    let mut items: Vec<(f64, u32)> = Vec::new();
+    let mut exact_tests = 0.0;
+    let centre = Fixation::at(0.5, 0.5);
+    for f in 0..frames {
+        let t = f64::from(cfg.warmup + cfg.timing_frames + f) * dt;
+        let fixation = gaze.at(t);
+        let frame_tests = source.step(None, &FrozenClock).sphere_tests;
+        exact_tests += frame_tests as f64;
+        let input = source.frame_input();
+        clairvoyant::truths(input.tree, input.world, input.candidates, &mut truths);
+        let fix_px = input.viewer.to_pixels(fixation.x, fixation.y);
+        for (ci, cond) in cfg.conditions.iter().enumerate() {
+            let view = FrameView {
+                viewer: input.viewer,
+                fixation_px: fix_px,
+                model: cond.measure_model,
+            };
+            weights.clear();
+            weights.extend(truths.iter().map(|t| t.weight(&view)));
+            all_deemed[ci] += weights.iter().sum::<f64>();
+            let fed = match cond.feed {
+                GazeFeed::Viewer => fixation,
+                GazeFeed::Centre => centre,
+            };
+            for (bi, budget) in cfg.budgets.iter().enumerate() {
+                let fb = match *budget {
+                    Budget::Tests(x) => FrameBudget::Tests((x * frame_tests as f64).round() as u64),
+                    Budget::Wall(x) => FrameBudget::Wall((x * exact_ns).round() as u64),
+                };
+                let k = cond.schedulers.len();
+                let mut max_tests = 0u64;
+                for j in 0..k {
+                    // Rotate the order so no scheduler always runs first into cold caches.
+                    let si = (j + f as usize) % k;
+                    let col = &mut colliders[ci][bi][si];
+                    let mut r = FrameReport::default();
+                    let mut p = PhaseProfile::default();
+                    let clk: &dyn Clock = match budget {
+                        Budget::Tests(_) => &FrozenClock,
+                        Budget::Wall(_) => &clock,
+                    };
+                    col.collide(&input, Some(fed), fb, clk, &mut r, &mut p);
+                    let tp: f64 = col
+                        .pairs()
+                        .iter()
+                        .zip(&weights)
+                        .filter(|(p, _)| p.status == foveal_engine::narrow_phase::PairStatus::Deemed)
+                        .map(|(_, w)| w)
+                        .sum();
+                    let cell = &mut cells[ci][bi][si];
+                    cell.true_p += tp;
+                    cell.tests += r.sphere_tests as f64;
+                    cell.prioritise_ms += p.prioritise_ns as f64 * 1e-6;
+                    max_tests = max_tests.max(r.sphere_tests);
+                }
+                items.clear();
+                items.extend(weights.iter().zip(&truths).map(|(&w, t)| (w, t.cost)));
+                bound[ci][bi] += clairvoyant::bound(&mut items, max_tests);
+            }
+        }
+    }
+    let k = 1.0 / f64::from(frames.max(1));
+    for c in cells.iter_mut().flatten().flatten() {
+        c.true_p *= k;
+        c.tests *= k;
+        c.prioritise_ms *= k;
+    }
+    for b in bound.iter_mut().flatten() {
+        *b *= k;
+    }
+    for a in &mut all_deemed {
+        *a *= k;
+    }
+    Ok(RunResult {
+        n,
+        seed,
+        frames,
+        exact_narrow_ms: exact_ns * 1e-6,
+        exact_tests: exact_tests * k,
+        cells,
+        bound,
+        all_deemed,
+    })
+}
+
+/// Run every (N, seed) on `cfg.jobs` threads; results in (N, seed) order.
+pub fn run(cfg: &OpenLoopConfig) -> Result<Vec<RunResult>, BenchError> {
+    let plan: Vec<(u32, u64)> = cfg
+        .ns
+        .iter()
+        .flat_map(|&n| cfg.seeds.iter().map(move |&s| (n, s)))
+        .collect();
+    let next = AtomicUsize::new(0);
+    let results: Mutex<Vec<(usize, Result<RunResult, BenchError>)>> = Mutex::new(Vec::new());
+    std::thread::scope(|scope| {
+        for _ in 0..cfg.jobs.clamp(1, plan.len().max(1)) {
+            scope.spawn(|| {
+                loop {
+                    let k = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(&(n, seed)) = plan.get(k) else { break };
+                    let r = run_one(cfg, n, seed);
+                    if let Ok(mut v) = results.lock() {
+                        v.push((k, r));
+                    }
+                }
+            });
+        }
+    });
+    let mut results = results
+        .into_inner()
+        .map_err(|_| BenchError::Invalid("a worker thread panicked".into()))?;
+    results.sort_by_key(|(k, _)| *k);
+    results.into_iter().map(|(_, r)| r).collect()
+}
+
+/// One row of the summary: a scheduler in a condition at a budget, across seeds.
+#[derive(Debug, Clone)]
+pub struct SummaryRow {
+    /// Bodies.
+    pub n: u32,
+    /// Condition name.
+    pub condition: String,
+    /// Budget label.
+    pub budget: String,
+    /// Scheduler label (`clairvoyant` for the bound).
+    pub scheduler: String,
+    /// Mean true P per frame.
+    pub true_p: MeanCi,
+    /// True P over round-robin's, paired by seed.
+    pub ratio_rr: MeanCi,
+    /// Share of the achievable reduction, (P_rr - P_s) / (P_rr - P_bound), paired by seed.
+    pub share: MeanCi,
+    /// Sphere tests per frame over round-robin's, paired by seed.
+    pub tests_rr: MeanCi,
+    /// Mean prioritisation time per frame (ms).
+    pub prioritise_ms: MeanCi,
+}
+
+/// Summaries across seeds for every (N, condition, budget, scheduler), with a `clairvoyant` row.
+pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
+    let mut rows = Vec::new();
+    for &n in &cfg.ns {
+        let rs: Vec<&RunResult> = runs.iter().filter(|r| r.n == n).collect();
+        for (ci, cond) in cfg.conditions.iter().enumerate() {
+            let rr = cond
+                .schedulers
+                .iter()
+                .position(|s| s.kind == SchedulerKind::RoundRobin);
+            for (bi, b) in cfg.budgets.iter().enumerate() {
+                let p_rr = |r: &RunResult| rr.map_or(f64::NAN, |j| r.cells[ci][bi][j].true_p);
+                let t_rr = |r: &RunResult| rr.map_or(f64::NAN, |j| r.cells[ci][bi][j].tests);
+                let mut push = |label: &str, p: &dyn Fn(&RunResult) -> f64, t: &dyn Fn(&RunResult) -> f64, pm: &dyn Fn(&RunResult) -> f64| {
+                    rows.push(SummaryRow {
+                        n,
+                        condition: cond.name.clone(),
+                        budget: b.label(),
+                        scheduler: label.into(),
+                        true_p: MeanCi::of(rs.iter().map(|r| p(r))),
+                        ratio_rr: MeanCi::of(rs.iter().map(|r| p(r) / p_rr(r))),
+                        share: MeanCi::of(
+                            rs.iter()
+                                .map(|r| (p_rr(r) - p(r)) / (p_rr(r) - r.bound[ci][bi])),
+                        ),
+                        tests_rr: MeanCi::of(rs.iter().map(|r| t(r) / t_rr(r))),
+                        prioritise_ms: MeanCi::of(rs.iter().map(|r| pm(r))),
+                    });
+                };
+                for (j, s) in cond.schedulers.iter().enumerate() {
+                    push(
+                        &s.label,
+                        &|r| r.cells[ci][bi][j].true_p,
+                        &|r| r.cells[ci][bi][j].tests,
+                        &|r| r.cells[ci][bi][j].prioritise_ms,
+                    );
+                }
+                push(
+                    "clairvoyant",
+                    &|r| r.bound[ci][bi],
+                    &|_| f64::NAN,
+                    &|_| f64::NAN,
+                );
+            }
+        }
+    }
+    rows
+}
+
+/// CSV of the per-run means.
+pub fn runs_csv(cfg: &OpenLoopConfig, runs: &[RunResult]) -> String {
+    let mut s = String::from(
+        "n,seed,frames,exact_narrow_ms,exact_tests,condition,budget,scheduler,true_p,tests,prioritise_ms,bound,all_deemed\n",
+    );
+    for r in runs {
+        for (ci, cond) in cfg.conditions.iter().enumerate() {
+            for (bi, b) in cfg.budgets.iter().enumerate() {
+                for (j, sch) in cond.schedulers.iter().enumerate() {
+                    let c = r.cells[ci][bi][j];
+                    let _ = writeln!(
+                        s,
+                        "{},{},{},{:.6},{:.1},\"{}\",{},{},{:.6e},{:.1},{:.6},{:.6e},{:.6e}",
+                        r.n,
+                        r.seed,
+                        r.frames,
+                        r.exact_narrow_ms,
+                        r.exact_tests,
+                        cond.name,
+                        b.label(),
+                        sch.label,
+                        c.true_p,
+                        c.tests,
+                        c.prioritise_ms,
+                        r.bound[ci][bi],
+                        r.all_deemed[ci],
+                    );
+                }
+            }
+        }
+    }
+    s
+}
+
+/// CSV of the summary rows.
+pub fn summary_csv(rows: &[SummaryRow]) -> String {
+    let mut s = String::from(
+        "n,condition,budget,scheduler,true_p,true_p_ci,ratio_rr,ratio_rr_ci,share,share_ci,tests_rr,tests_rr_ci,prioritise_ms\n",
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "{},\"{}\",{},{},{:.6e},{:.3e},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.5}",
+            r.n,
+            r.condition,
+            r.budget,
+            r.scheduler,
+            r.true_p.mean,
+            r.true_p.half,
+            r.ratio_rr.mean,
+            r.ratio_rr.half,
+            r.share.mean,
+            r.share.half,
+            r.tests_rr.mean,
+            r.tests_rr.half,
+            r.prioritise_ms.mean,
+        );
+    }
+    s
+}
+
+/// Markdown tables: per N and condition, one row per scheduler, one column per budget, each cell
+/// "true P / round-robin's (share of achievable reduction)".
+pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "Cells: true P over round-robin's, paired by seed, mean ± 95% CI half-width; in brackets the \
+         share of the achievable reduction (P_rr - P_s) / (P_rr - P_clairvoyant). Wall-clock \
+         columns add the sphere tests done relative to round-robin's.\n"
+    );
+    for &n in &cfg.ns {
+        let rs: Vec<&RunResult> = runs.iter().filter(|r| r.n == n).collect();
+        let narrow = MeanCi::of(rs.iter().map(|r| r.exact_narrow_ms));
+        let tests = MeanCi::of(rs.iter().map(|r| r.exact_tests));
+        let _ = writeln!(
+            s,
+            "### N = {n} ({} seeds x {} frames; exact narrow phase {} ms, {} sphere tests per frame)\n",
+            rs.len(),
+            cfg.frames_for(n),
+            narrow.fmt(3),
+            tests.fmt(3)
+        );
+        for cond in &cfg.conditions {
+            let _ = writeln!(s, "**{}**\n", cond.name);
+            let mut head = String::from("| scheduler |");
+            let mut rule = String::from("| --- |");
+            for b in &cfg.budgets {
+                let _ = write!(head, " {} |", b.label());
+                rule.push_str(" --- |");
+            }
+            let _ = writeln!(s, "{head}\n{rule}");
+            let labels: Vec<String> = cond
+                .schedulers
+                .iter()
+                .map(|x| x.label.clone())
+                .chain(std::iter::once("clairvoyant".to_string()))
+                .collect();
+            for label in labels {
+                let _ = write!(s, "| {label} |");
+                for b in &cfg.budgets {
+                    let Some(r) = rows.iter().find(|r| {
+                        r.n == n && r.condition == cond.name && r.budget == b.label() && r.scheduler == label
+                    }) else {
+                        s.push_str(" |");
+                        continue;
+                    };
+                    let mut cell = format!(" {} [{}]", r.ratio_rr.fmt(2), r.share.fmt(2));
+                    if matches!(b, Budget::Wall(_)) && r.tests_rr.mean.is_finite() {
+                        let _ = write!(cell, " tests {}", r.tests_rr.fmt(2));
+                    }
+                    let _ = write!(s, "{cell} |");
+                }
+                s.push('\n');
+            }
+            s.push('\n');
+        }
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tiny_protocol_orders_the_bound_below_every_scheduler() {
+        let mut cfg = OpenLoopConfig::quick();
+        cfg.ns = vec![150];
+        cfg.seeds = vec![1, 2];
+        cfg.frames = vec![(150, 4)];
+        cfg.warmup = 5;
+        cfg.timing_frames = 2;
+        cfg.budgets = vec![Budget::Tests(0.05), Budget::Tests(0.3)];
+        cfg.conditions.truncate(1);
+        let runs = run(&cfg).expect("runs");
+        assert_eq!(runs.len(), 2);
+        let rows = summarise(&cfg, &runs);
+        for r in &runs {
+            for (bi, _) in cfg.budgets.iter().enumerate() {
+                for c in &r.cells[0][bi] {
+                    assert!(c.true_p >= r.bound[0][bi] - 1e-12, "{} < {}", c.true_p, r.bound[0][bi]);
+                    assert!(c.true_p <= r.all_deemed[0] + 1e-12);
+                }
+            }
+        }
+        let rr = rows
+            .iter()
+            .find(|r| r.scheduler == "round-robin")
+            .expect("round-robin row");
+        assert!((rr.ratio_rr.mean - 1.0).abs() < 1e-12 && rr.share.mean.abs() < 1e-12);
+        assert!(rows.iter().any(|r| r.scheduler == "clairvoyant"));
+        let md = markdown(&cfg, &runs, &rows);
+        assert!(md.contains("| priced |") && md.contains("| clairvoyant |"));
+    }
+}
