@@ -350,6 +350,10 @@ struct ScaleArgs {
     /// Scene seed.
     #[arg(long, default_value_t = 1)]
     seed: u64,
+    /// Skip the previous-engine baseline (1 thread, sweep and prune) where the engine picks
+    /// another broad phase.
+    #[arg(long)]
+    no_baseline: bool,
     /// Output directory (scale.csv, scale.md).
     #[arg(long, default_value = foveal_bench::scale::DEFAULT_OUT)]
     out: PathBuf,
@@ -376,6 +380,7 @@ fn scale(args: &ScaleArgs) -> Result<()> {
         warmup: args.warmup,
         budget_ms: args.budget_ms.clone().unwrap_or_default(),
         quick: args.quick,
+        baseline: !args.no_baseline,
         seed: args.seed,
         out: args.out.clone(),
     };

@@ -20,6 +20,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
+use foveal_engine::broad_phase::BroadPhaseKind;
 use foveal_engine::{
     BudgetSpec, ConfigError, Fixation, PhaseProfile, SceneConfig, SchedulerKind, SimConfig,
     Simulation,
@@ -143,6 +144,8 @@ pub struct RunSpec {
     pub n: u32,
     /// `SimConfig::threads`.
     pub threads: u32,
+    /// `SimConfig::broad_phase`.
+    pub broad_phase: BroadPhaseKind,
     /// Exact or budgeted.
     pub mode: Mode,
     /// Scene seed.
@@ -210,6 +213,8 @@ pub struct ScaleConfig {
     pub budget_ms: Vec<f64>,
     /// Smaller frame counts (and, from the command line, [`QUICK_NS`]).
     pub quick: bool,
+    /// Also run the baseline (see [`RunSpec::is_baseline`]) where it differs from the 1-thread run.
+    pub baseline: bool,
     /// Scene seed.
     pub seed: u64,
     /// Output directory.
@@ -225,6 +230,7 @@ impl Default for ScaleConfig {
             warmup: None,
             budget_ms: Vec::new(),
             quick: false,
+            baseline: true,
             seed: 1,
             out: PathBuf::from(DEFAULT_OUT),
         }
@@ -306,22 +312,30 @@ impl ScaleConfig {
         }
     }
 
-    /// Every run, in order: for each N, exact then budgeted, each with every thread count.
+    /// Every run, in order: for each N, exact then budgeted, each with every thread count (broad
+    /// phase chosen by the engine), then the baseline where the engine's choice at this N is not
+    /// sweep and prune (below that N the 1-thread run is the baseline).
     pub fn plan(&self) -> Vec<RunSpec> {
         let mut out = Vec::new();
         for (i, &n) in self.ns.iter().enumerate() {
             let frames = self.frames.unwrap_or(default_frames(n, self.quick));
             let warmup = self.warmup.unwrap_or(default_warmup(n, self.quick));
             for mode in [Mode::Exact, Mode::BudgetMs(self.budget_for(i, n))] {
+                let spec = |threads, broad_phase| RunSpec {
+                    n,
+                    threads,
+                    broad_phase,
+                    mode,
+                    seed: self.seed,
+                    warmup,
+                    frames,
+                };
                 for &threads in &self.threads {
-                    out.push(RunSpec {
-                        n,
-                        threads,
-                        mode,
-                        seed: self.seed,
-                        warmup,
-                        frames,
-                    });
+                    out.push(spec(threads, BroadPhaseKind::Auto));
+                }
+                let auto = BroadPhaseKind::Auto.resolve(n as usize);
+                if self.baseline && auto != BroadPhaseKind::SweepAndPrune {
+                    out.push(spec(1, BroadPhaseKind::SweepAndPrune));
                 }
             }
         }
@@ -331,15 +345,34 @@ impl ScaleConfig {
 
 /// The engine configuration of a run.
 fn sim_config(spec: &RunSpec) -> SimConfig {
-    let mut c = SimConfig {
+    SimConfig {
         scene: SceneConfig::paper(spec.n, spec.seed),
         budget: spec.mode.budget(),
         scheduler: SchedulerKind::RoundRobin,
         audit: false,
+        threads: spec.threads,
+        broad_phase: spec.broad_phase,
         ..SimConfig::default()
-    };
-    c.threads = spec.threads;
-    c
+    }
+}
+
+impl RunSpec {
+    /// The closest the bench can still come to the engine before threads and the grid: one
+    /// thread and the sweep-and-prune broad phase. True for the explicit sweep-and-prune run and
+    /// for a 1-thread run whose automatic choice is sweep and prune anyway.
+    pub fn is_baseline(&self) -> bool {
+        self.threads == 1
+            && self.broad_phase.resolve(self.n as usize) == BroadPhaseKind::SweepAndPrune
+    }
+
+    /// Broad phase as run (the automatic choice resolved), for tables.
+    pub fn broad_label(&self) -> String {
+        let resolved = self.broad_phase.resolve(self.n as usize).name();
+        match self.broad_phase {
+            BroadPhaseKind::Auto => format!("auto ({resolved})"),
+            _ => resolved.to_string(),
+        }
+    }
 }
 
 /// The profiled phases of `p`, as (name without `_ns`, nanoseconds), in pipeline order. Read
@@ -549,10 +582,26 @@ pub struct ScaleOutput {
 }
 
 impl ScaleOutput {
+    /// The run with the engine's own broad-phase choice.
     fn find(&self, n: u32, threads: u32, exact: bool) -> Option<&RunResult> {
         self.results.iter().find(|r| {
-            r.spec.n == n && r.spec.threads == threads && (r.spec.mode == Mode::Exact) == exact
+            r.spec.broad_phase == BroadPhaseKind::Auto
+                && r.spec.n == n
+                && r.spec.threads == threads
+                && (r.spec.mode == Mode::Exact) == exact
         })
+    }
+
+    /// The baseline run of `spec`'s N and mode: the explicit sweep-and-prune run, or else the
+    /// 1-thread run when that is the baseline itself.
+    pub fn baseline_of(&self, spec: &RunSpec) -> Option<&RunResult> {
+        let same = |r: &&RunResult| r.spec.n == spec.n && r.spec.mode == spec.mode;
+        let explicit = |r: &&RunResult| r.spec.broad_phase == BroadPhaseKind::SweepAndPrune;
+        let runs = || self.results.iter().filter(same);
+        runs()
+            .filter(|r| r.spec.is_baseline())
+            .find(explicit)
+            .or_else(|| runs().find(|r| r.spec.is_baseline()))
     }
 
     /// The issue's targets that this run's configurations can answer (2-thread rows unless a
@@ -642,7 +691,11 @@ impl ScaleOutput {
         let rss_1m = self
             .results
             .iter()
-            .filter(|r| r.spec.n == 1_000_000 && r.spec.mode == Mode::Exact)
+            .filter(|r| {
+                r.spec.n == 1_000_000
+                    && r.spec.mode == Mode::Exact
+                    && r.spec.broad_phase == BroadPhaseKind::Auto
+            })
             .map(|r| r.peak_rss_kib)
             .max();
         if let Some(kib) = rss_1m {
@@ -666,6 +719,7 @@ impl ScaleOutput {
         let worst_measure = self
             .results
             .iter()
+            .filter(|r| r.spec.broad_phase == BroadPhaseKind::Auto)
             .filter_map(|r| {
                 let share = r.phase_share.iter().find(|(k, _)| k == "measure")?.1;
                 Some((share, r))
@@ -674,7 +728,7 @@ impl ScaleOutput {
         if let Some((share, r)) = worst_measure {
             check(
                 format!(
-                    "metrics share of the step, worst run (N = {}, {}, {} threads)",
+                    "metrics share of the step, worst run (N = {}, {}, threads = {})",
                     r.spec.n,
                     r.spec.mode.label(),
                     r.spec.threads
@@ -730,7 +784,9 @@ pub fn markdown(out: &ScaleOutput) -> String {
          `Instant` around `Simulation::step` (p99 nearest rank: the maximum below 100 frames); \
          phase shares = phase totals from `FrameReport.profile` over total step time; foveal exact = \
          frames in which no pair within 5° of the fixation was deemed. Each run in its own process; \
-         RSS is its peak (`VmHWM`).\n",
+         RSS is its peak (`VmHWM`). Previous engine = the same N and mode with one thread and the \
+         sweep-and-prune broad phase (the engine before threads and the grid; its other phases are \
+         today's).\n",
         out.results.first().map_or(1, |r| r.spec.seed)
     );
     let _ = writeln!(
@@ -744,7 +800,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
     let names = phase_names(&out.results);
     let _ = write!(
         s,
-        "| N | mode | threads | warm-up + frames | step p50 (ms) | step p99 (ms) | phases p50 (ms) |"
+        "| N | mode | threads | broad phase | warm-up + frames | step p50 (ms) | step p99 (ms) | previous engine p50 / p99 (ms) | phases p50 (ms) |"
     );
     for k in &names {
         let _ = write!(s, " {k} |");
@@ -753,22 +809,29 @@ pub fn markdown(out: &ScaleOutput) -> String {
         s,
         " step ns/body | broad ns/body | peak RSS (MiB) | foveal exact | foveal pairs/frame | candidates/frame | deemed/frame |"
     );
-    let _ = write!(s, "|---|---|---|---|---|---|---|");
+    let _ = write!(s, "|---|---|---|---|---|---|---|---|---|");
     for _ in &names {
         let _ = write!(s, "---|");
     }
     let _ = writeln!(s, "---|---|---|---|---|---|---|");
     for r in &out.results {
+        let previous = match out.baseline_of(&r.spec) {
+            Some(b) if b.spec == r.spec => "(this run)".to_string(),
+            Some(b) => format!("{:.2} / {:.2}", b.step_p50_ms, b.step_p99_ms),
+            None => "–".to_string(),
+        };
         let _ = write!(
             s,
-            "| {} | {} | {} | {} + {} | {:.2} | {:.2} | {:.2} |",
+            "| {} | {} | {} | {} | {} + {} | {:.2} | {:.2} | {} | {:.2} |",
             grouped(r.spec.n),
             r.spec.mode.label(),
             r.spec.threads,
+            r.spec.broad_label(),
             r.spec.warmup,
             r.spec.frames,
             r.step_p50_ms,
             r.step_p99_ms,
+            previous,
             r.phases_p50_ms
         );
         for k in &names {
@@ -818,7 +881,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
 pub fn csv(results: &[RunResult]) -> String {
     let names = phase_names(results);
     let mut s = String::from(
-        "n,mode,budget_ms,threads,seed,warmup,frames,step_p50_ms,step_p99_ms,step_mean_ms,step_max_ms,phases_p50_ms",
+        "n,mode,budget_ms,threads,broad_phase,baseline,seed,warmup,frames,step_p50_ms,step_p99_ms,step_mean_ms,step_max_ms,phases_p50_ms",
     );
     for k in &names {
         let _ = write!(s, ",share_{k}");
@@ -831,7 +894,7 @@ pub fn csv(results: &[RunResult]) -> String {
     for r in results {
         let _ = write!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.spec.n,
             if r.spec.mode == Mode::Exact {
                 "exact"
@@ -840,6 +903,8 @@ pub fn csv(results: &[RunResult]) -> String {
             },
             opt(r.spec.mode.budget_ms()),
             r.spec.threads,
+            r.spec.broad_phase.resolve(r.spec.n as usize).name(),
+            r.spec.is_baseline(),
             r.spec.seed,
             r.spec.warmup,
             r.spec.frames,
@@ -889,12 +954,13 @@ pub fn run(cfg: &ScaleConfig, exe: &Path, progress: bool) -> Result<ScaleOutput,
         let r = run_child(exe, spec)?;
         if progress {
             eprintln!(
-                "[{}/{}] N={} {} threads={}: step p50 {:.2} ms, p99 {:.2} ms, RSS {:.0} MiB ({:.0} s)",
+                "[{}/{}] N={} {} threads={} broad={}: step p50 {:.2} ms, p99 {:.2} ms, RSS {:.0} MiB ({:.0} s)",
                 i + 1,
                 plan.len(),
                 spec.n,
                 spec.mode.label(),
                 spec.threads,
+                spec.broad_label(),
                 r.step_p50_ms,
                 r.step_p99_ms,
                 r.peak_rss_kib as f64 / 1024.0,
@@ -948,10 +1014,23 @@ mod tests {
     fn plan_and_validation() {
         let cfg = ScaleConfig::default();
         let plan = cfg.plan();
-        assert_eq!(plan.len(), 3 * 2 * 2);
-        assert_eq!(plan[2].mode, Mode::BudgetMs(4.0));
-        assert_eq!(plan[6].mode, Mode::BudgetMs(16.0));
-        assert_eq!(plan[10].mode, Mode::BudgetMs(50.0));
+        // Two modes x two thread counts per N, plus a sweep-and-prune baseline per mode where the
+        // engine picks the grid.
+        let baselines = plan
+            .iter()
+            .filter(|s| s.broad_phase == BroadPhaseKind::SweepAndPrune)
+            .count();
+        assert_eq!(plan.len(), 3 * 2 * 2 + baselines);
+        assert!(
+            plan.iter()
+                .all(|s| s.broad_phase == BroadPhaseKind::Auto || s.threads == 1)
+        );
+        for (n, ms) in [(10_000, 4.0), (100_000, 16.0), (1_000_000, 50.0)] {
+            let modes: Vec<Mode> = plan.iter().filter(|s| s.n == n).map(|s| s.mode).collect();
+            assert!(modes.contains(&Mode::Exact) && modes.contains(&Mode::BudgetMs(ms)));
+            let base = plan.iter().filter(|s| s.n == n && s.is_baseline()).count();
+            assert_eq!(base, 2, "one baseline per mode at N = {n}");
+        }
         cfg.validate().expect("defaults valid");
         let bad = ScaleConfig {
             budget_ms: vec![1.0, 2.0],
