@@ -2,7 +2,9 @@
 //!
 //! `cargo bench -p foveal-engine --bench step`
 //! - `frame_exact/10000`: one whole frame (integrate, broad, narrow to completion, response).
-//! - `broad_phase/100000`: one sweep-and-prune update after a step of motion, per frame.
+//! - `broad_phase/{sap,grid,grid-2t}/{10000,100000,1000000}`: one broad-phase update after a step
+//!   of motion, per frame, for sweep and prune, the grid, and the grid on 2 threads (`grid-2t`, from
+//!   N = 100,000); select one kind with e.g. `-- broad_phase/grid`.
 //! - `narrow_exact/10000`: the exact narrow phase alone over one frame's candidate pairs; the
 //!   throughput line gives sphere tests per second.
 
@@ -10,7 +12,7 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use foveal_engine::broad_phase::BroadPhase;
+use foveal_engine::broad_phase::{BroadPhase, BroadPhaseKind};
 use foveal_engine::narrow_phase::NarrowPhase;
 use foveal_engine::shape::Star;
 use foveal_engine::sphere_tree::SphereTree;
@@ -54,26 +56,40 @@ fn frame(c: &mut Criterion) {
 
 fn broad(c: &mut Criterion) {
     let mut g = c.benchmark_group("broad_phase");
-    g.measurement_time(Duration::from_secs(8));
-    for n in [10_000u32, 100_000] {
+    g.measurement_time(Duration::from_secs(6));
+    g.sample_size(20);
+    for n in [10_000u32, 100_000, 1_000_000] {
         let cfg = SceneConfig::paper(n, 1);
         let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
         let mut world = World::generate(&cfg);
-        let mut bp = BroadPhase::new(tree.root_radius(), world.lo, cfg.volume_side(), world.len());
         // Two consecutive frames: each iteration repairs one frame's worth of motion (forwards or
         // backwards), so the measurement is the broad phase alone, without integration.
         let before = world.position.clone();
         world.integrate(cfg.dt);
         let after = world.position.clone();
-        bp.update(&before);
-        let mut flip = false;
         g.throughput(Throughput::Elements(u64::from(n)));
-        g.bench_function(BenchmarkId::from_parameter(n), |b| {
-            b.iter(|| {
-                flip = !flip;
-                black_box(bp.update(if flip { &after } else { &before }).len())
-            })
-        });
+        let kinds = [
+            ("sap", BroadPhaseKind::SweepAndPrune, 1),
+            ("grid", BroadPhaseKind::Grid, 1),
+            ("grid-2t", BroadPhaseKind::Grid, 2),
+        ];
+        for (id, kind, threads) in kinds {
+            if threads > 1 && n < 100_000 {
+                continue;
+            }
+            let half = tree.root_radius();
+            let mut bp =
+                BroadPhase::with_kind(kind, half, world.lo, cfg.volume_side(), world.len());
+            bp.set_threads(threads);
+            bp.update(&before);
+            let mut flip = false;
+            g.bench_function(BenchmarkId::new(id, n), |b| {
+                b.iter(|| {
+                    flip = !flip;
+                    black_box(bp.update(if flip { &after } else { &before }).len())
+                })
+            });
+        }
     }
     g.finish();
 }

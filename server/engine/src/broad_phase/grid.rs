@@ -1,0 +1,491 @@
+//! Uniform grid over fixed-size boxes, rebuilt by a two-level counting sort every frame.
+//!
+//! Every box is the cube of half-size `h` around its body's centre (paper section 2), so two boxes
+//! overlap iff the centres are within `reach = 2h` on every axis. Cells are at least `reach` wide
+//! in y and z and at least `reach / 2` wide in x, so an overlapping pair lies in adjacent rows
+//! (y, z within one cell) and within two cells in x. Each unordered pair of rows is visited once:
+//! a row against itself and its four forward neighbours `(dy, dz)` = (1, 0), (-1, 1), (0, 1), (1, 1).
+//!
+//! Why a grid at large N: sweep and prune keeps its sorted lists between frames (I-COLLIDE [5]),
+//! which is the right trade at the paper's N, but at a million bodies those lists are scattered
+//! through memory and their repair is dominated by cache misses. Here every pass is a forward scan
+//! over flat arrays:
+//! - the sort is a radix sort in two levels: bodies are read in id order and dealt into a few dozen
+//!   contiguous *buckets* of cells (few enough for the hardware prefetchers to follow every output
+//!   stream), then each bucket, small enough to stay in cache, is counting-sorted by cell;
+//! - cells are numbered x fastest, so the x-cells `ix - 2 ..= ix + 2` of any row are one contiguous
+//!   slice: a body's candidates are five slices (its own row from the next body on, and the four
+//!   forward rows), each scanned without a branch on the (unpredictable) overlap outcome;
+//! - half-width x cells cut the candidates a body is tested against by about a sixth, compared with
+//!   cubic cells, for one more entry per cell in the cell index.
+//!
+//! The output depends only on this frame's positions: bodies are ordered by cell, then by id, and
+//! pairs are listed body by body in that order. It does not depend on how many threads produce it:
+//! the z-planes are cut into consecutive partitions, each partition writes its own buffer, and the
+//! buffers are concatenated in partition order.
+//!
+//! Positions outside the volume are clamped into the edge cells, which keeps every overlapping pair
+//! within the neighbourhood above because clamping is monotone.
+
+use std::fmt;
+
+use super::PairBuffer;
+use crate::math::Vec3;
+
+/// Cells are made wider than their minimum by this factor, so that the rounding of the cell
+/// arithmetic (relative error ~1e-13 at any grid size allowed here, also far from the origin) can
+/// never put two centres `reach` apart further apart in cells than the neighbourhood searched.
+const CELL_MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
+
+/// x cells per y-z cell width: candidates come from x-cells `ix - X_SPLIT ..= ix + X_SPLIT`.
+const X_SPLIT: usize = 2;
+
+/// At most this many cells per body (plus a constant): bounds memory for sparse scenes; cells only
+/// ever get wider, which is always correct.
+const MAX_CELLS_PER_BODY: usize = 4;
+
+/// Cells per bucket of the first sorting level, at most `2^MAX_BUCKET_SHIFT`; buckets are aimed at
+/// [`TARGET_BUCKETS`] so that the first level writes few enough streams to stay prefetched while a
+/// bucket still fits in a core's cache at a million bodies.
+const MAX_BUCKET_SHIFT: u32 = 24;
+const TARGET_BUCKETS: usize = 32;
+
+/// Fewest bodies worth handing to one thread: starting a scoped thread costs tens of
+/// microseconds, about the grid's time for this many bodies.
+const MIN_BODIES_PER_THREAD: usize = 20_000;
+
+/// One body in cell order: its centre, id and cell (32 bytes, two to a cache line).
+#[derive(Debug, Clone, Copy, Default)]
+struct Slot {
+    x: f64,
+    y: f64,
+    z: f64,
+    id: u32,
+    cell: u32,
+}
+
+/// Cell arithmetic, copied out of the grid so that it can be used while the buffers are borrowed.
+#[derive(Debug, Clone, Copy)]
+struct Dims {
+    lo: Vec3,
+    /// Cells per unit length in y and z, and in x.
+    inv_cell: f64,
+    inv_cell_x: f64,
+    /// Cells per axis in y and z, and in x (`X_SPLIT * n`).
+    n: usize,
+    nx: usize,
+}
+
+impl Dims {
+    /// Cell of a centre, x fastest; positions outside the volume clamp to the edge cells.
+    #[inline]
+    fn cell_of(&self, p: Vec3) -> u32 {
+        let d = p - self.lo;
+        // Truncation of a value clamped to [0, n-1] is its floor; `as usize` of NaN is 0.
+        let top = (self.n - 1) as f64;
+        let ix = (d.x * self.inv_cell_x).clamp(0.0, (self.nx - 1) as f64) as usize;
+        let iy = (d.y * self.inv_cell).clamp(0.0, top) as usize;
+        let iz = (d.z * self.inv_cell).clamp(0.0, top) as usize;
+        ((iz * self.n + iy) * self.nx + ix) as u32
+    }
+
+    fn cells(&self) -> usize {
+        self.n * self.n * self.nx
+    }
+}
+
+/// Persistent uniform-grid state.
+#[derive(Clone)]
+pub(super) struct Grid {
+    reach: f64,
+    dims: Dims,
+    bodies: usize,
+    /// First-level buckets hold `2^bucket_shift` consecutive cells each.
+    bucket_shift: u32,
+    /// `bucket_start[b]..bucket_start[b + 1]` are bucket b's slots (in `staged` and `sorted`).
+    bucket_start: Vec<u32>,
+    /// Bodies dealt into buckets, in id order within a bucket.
+    staged: Vec<Slot>,
+    /// Bodies sorted by cell, then id.
+    sorted: Vec<Slot>,
+    /// `start[c]..start[c + 1]` are cell c's slots; past the last cell, one row of empty cells
+    /// stands in for the rows beyond the volume's faces.
+    start: Vec<u32>,
+    /// Per-part bucket counts of the first level (`parts` rows of `buckets`).
+    part_counts: Vec<u32>,
+    /// Per-part per-cell counters of the bucket being sorted.
+    cursors: Vec<Vec<u32>>,
+    threads: usize,
+    /// Fewer bodies than this per thread and fewer threads are used (tests lower it).
+    min_bodies_per_thread: usize,
+    pairs: PairBuffer,
+    /// Output of partitions 1.. when running on several threads.
+    partition_pairs: Vec<PairBuffer>,
+}
+
+impl fmt::Debug for Grid {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Grid")
+            .field("reach", &self.reach)
+            .field("dims", &self.dims)
+            .field("bodies", &self.bodies)
+            .field("buckets", &(self.bucket_start.len() - 1))
+            .field("threads", &self.threads)
+            .field("pairs", &self.pairs.as_slice().len())
+            .finish_non_exhaustive()
+    }
+}
+
+impl Grid {
+    /// State for boxes of half-size `half` in the cubic volume [lo, lo + side]^3.
+    pub(super) fn new(half: f64, lo: Vec3, side: f64, bodies: usize) -> Self {
+        let reach = 2.0 * half;
+        // `as usize` saturates (and maps NaN to 0), so degenerate sizes land in the clamp.
+        let by_size = (side / (reach * CELL_MARGIN)).floor() as usize;
+        let by_count = ((MAX_CELLS_PER_BODY * bodies + 64) as f64 / X_SPLIT as f64)
+            .cbrt()
+            .floor() as usize;
+        let n = by_size.min(by_count).max(1);
+        let nx = X_SPLIT * n;
+        let dims = Dims {
+            lo,
+            inv_cell: n as f64 / side,
+            inv_cell_x: nx as f64 / side,
+            n,
+            nx,
+        };
+        let cells = dims.cells();
+        let per_bucket = cells.div_ceil(TARGET_BUCKETS).max(1);
+        let bucket_shift = (usize::BITS - (per_bucket - 1).leading_zeros()).min(MAX_BUCKET_SHIFT);
+        let buckets = cells.div_ceil(1 << bucket_shift);
+        Self {
+            reach,
+            dims,
+            bodies,
+            bucket_shift,
+            bucket_start: vec![0; buckets + 1],
+            staged: vec![Slot::default(); bodies],
+            sorted: vec![Slot::default(); bodies],
+            start: vec![0; cells + nx + 1],
+            part_counts: Vec::new(),
+            cursors: vec![vec![0; (1usize << bucket_shift).min(cells)]],
+            threads: 1,
+            min_bodies_per_thread: MIN_BODIES_PER_THREAD,
+            pairs: PairBuffer::default(),
+            partition_pairs: Vec::new(),
+        }
+    }
+
+    pub(super) fn bodies(&self) -> usize {
+        self.bodies
+    }
+
+    #[cfg(test)]
+    pub(super) fn pair_storage(&self) -> usize {
+        self.pairs.capacity()
+    }
+
+    pub(super) fn set_threads(&mut self, threads: usize) {
+        self.threads = threads.max(1);
+        self.partition_pairs
+            .resize_with(self.threads - 1, PairBuffer::default);
+        let per_bucket = self.cursors[0].len();
+        self.cursors
+            .resize_with(self.threads, || vec![0; per_bucket]);
+    }
+
+    /// Parts the work is split into this frame: one per thread, but at least
+    /// `min_bodies_per_thread` bodies and one z-plane per part.
+    fn parts(&self) -> usize {
+        self.threads
+            .min(self.bodies / self.min_bodies_per_thread)
+            .min(self.dims.n)
+            .max(1)
+    }
+
+    /// Split the work over the threads even for tiny scenes (so tests exercise the partitions).
+    #[cfg(test)]
+    pub(super) fn partition_tiny_scenes(&mut self) {
+        self.min_bodies_per_thread = 1;
+    }
+
+    /// Re-sort the bodies into their cells and regenerate the candidate pairs.
+    pub(super) fn update(&mut self, positions: &[Vec3]) {
+        self.sort(positions);
+        self.find_pairs();
+    }
+
+    /// Two-level counting sort by cell, stable in id. With several parts, the bodies are split
+    /// into consecutive id ranges for the first level and the buckets into consecutive ranges for
+    /// the second; every body lands in the same slot as with one part.
+    fn sort(&mut self, positions: &[Vec3]) {
+        let dims = self.dims;
+        let shift = self.bucket_shift;
+        let parts = self.parts();
+        let buckets = self.bucket_start.len() - 1;
+        let per_part = positions.len().div_ceil(parts).max(1);
+        // Level 1: count per part.
+        self.part_counts.clear();
+        self.part_counts.resize(parts * buckets, 0);
+        let items = positions
+            .chunks(per_part)
+            .zip(self.part_counts.chunks_mut(buckets))
+            .collect();
+        in_parallel(items, |(chunk, counts): (&[Vec3], &mut [u32])| {
+            for &p in chunk {
+                counts[(dims.cell_of(p) >> shift) as usize] += 1;
+            }
+        });
+        // Each bucket holds part 0's bodies, then part 1's, ..., so ids stay in order.
+        let mut rest: &mut [Slot] = &mut self.staged;
+        let mut outputs: Vec<Vec<&mut [Slot]>> = (0..parts).map(|_| Vec::new()).collect();
+        self.bucket_start[0] = 0;
+        for b in 0..buckets {
+            let mut total = self.bucket_start[b];
+            for (t, out) in outputs.iter_mut().enumerate() {
+                let count = self.part_counts[t * buckets + b];
+                let (head, tail) = std::mem::take(&mut rest).split_at_mut(count as usize);
+                out.push(head);
+                rest = tail;
+                total += count;
+            }
+            self.bucket_start[b + 1] = total;
+        }
+        // Level 1: deal each part's bodies into its share of every bucket.
+        let items = positions
+            .chunks(per_part)
+            .zip(outputs)
+            .enumerate()
+            .collect();
+        in_parallel(
+            items,
+            |(t, (chunk, mut out)): (usize, (&[Vec3], Vec<&mut [Slot]>))| {
+                for (k, &p) in chunk.iter().enumerate() {
+                    let cell = dims.cell_of(p);
+                    let b = (cell >> shift) as usize;
+                    if let Some((slot, tail)) = std::mem::take(&mut out[b]).split_first_mut() {
+                        *slot = Slot {
+                            x: p.x,
+                            y: p.y,
+                            z: p.z,
+                            id: (t * per_part + k) as u32,
+                            cell,
+                        };
+                        out[b] = tail;
+                    }
+                }
+            },
+        );
+        // Level 2: counting sort of each bucket by cell, parts taking consecutive buckets.
+        let cells = dims.cells();
+        let cuts = cut(&self.bucket_start, parts);
+        let mut sorted: &mut [Slot] = &mut self.sorted;
+        let mut start: &mut [u32] = &mut self.start[..cells];
+        let mut items = Vec::with_capacity(parts);
+        for (w, cursor) in cuts.windows(2).zip(&mut self.cursors) {
+            let (b0, b1) = (w[0], w[1]);
+            let bodies = (self.bucket_start[b1] - self.bucket_start[b0]) as usize;
+            let span = (b1 << shift).min(cells) - (b0 << shift).min(cells);
+            let (dest, more) = std::mem::take(&mut sorted).split_at_mut(bodies);
+            sorted = more;
+            let (index, more) = std::mem::take(&mut start).split_at_mut(span);
+            start = more;
+            items.push((b0..b1, dest, index, cursor));
+        }
+        let (staged, bucket_start) = (&self.staged[..], &self.bucket_start[..]);
+        in_parallel(items, |(range, dest, index, cursor)| {
+            let (s_base, c_base) = (bucket_start[range.start] as usize, range.start << shift);
+            for b in range {
+                let (s0, s1) = (bucket_start[b] as usize, bucket_start[b + 1] as usize);
+                let c0 = b << shift;
+                let c1 = ((b + 1) << shift).min(cells);
+                let count = &mut cursor[..c1 - c0];
+                count.fill(0);
+                for s in &staged[s0..s1] {
+                    count[s.cell as usize - c0] += 1;
+                }
+                let mut at = s0 as u32;
+                for (k, c) in count.iter_mut().enumerate() {
+                    index[c0 - c_base + k] = at;
+                    (at, *c) = (at + *c, at);
+                }
+                // The bucket's destination is touched in order first, so that the scatter below
+                // hits cache instead of fetching a line for every write.
+                let dest = &mut dest[s0 - s_base..s1 - s_base];
+                dest.fill(Slot::default());
+                for s in &staged[s0..s1] {
+                    let k = s.cell as usize - c0;
+                    dest[count[k] as usize - s0] = *s;
+                    count[k] += 1;
+                }
+            }
+        });
+        // The end of the last cell, and the row of empty cells beyond it.
+        self.start[cells..].fill(self.bodies as u32);
+    }
+
+    fn find_pairs(&mut self) {
+        let rows = Rows {
+            reach: self.reach,
+            dims: self.dims,
+            sorted: &self.sorted,
+            start: &self.start,
+        };
+        let parts = self.parts();
+        // Cut the z-planes where the running body count crosses k/parts of the total.
+        let plane = self.dims.n * self.dims.nx;
+        let plane_starts: Vec<u32> = (0..=self.dims.n).map(|iz| self.start[iz * plane]).collect();
+        let cuts = cut(&plane_starts, parts);
+        let outs = std::iter::once(&mut self.pairs).chain(&mut self.partition_pairs);
+        let items = cuts.windows(2).map(|w| (w[0], w[1])).zip(outs).collect();
+        in_parallel(
+            items,
+            |((z0, z1), out): ((usize, usize), &mut PairBuffer)| {
+                rows.planes(z0, z1, out);
+            },
+        );
+        for part in &mut self.partition_pairs[..parts - 1] {
+            self.pairs.append(part.as_slice());
+            part.end_frame();
+        }
+        self.pairs.end_frame();
+    }
+
+    /// Candidate pairs of the last update, each as (smaller id, larger id).
+    pub(super) fn pairs(&self) -> &[(u32, u32)] {
+        self.pairs.as_slice()
+    }
+
+    /// Panic unless every body is in exactly one slot, of the cell its position maps to, in
+    /// (cell, id) order and with its current centre (used by tests).
+    pub(super) fn assert_well_formed(&self, positions: &[Vec3]) {
+        let cells = self.dims.cells();
+        assert_eq!(self.start[0], 0, "first cell does not start at 0");
+        assert!(
+            self.start[cells..]
+                .iter()
+                .all(|&s| s as usize == self.bodies),
+            "cells do not end at the body count"
+        );
+        let mut seen = vec![false; positions.len()];
+        for c in 0..cells {
+            let (a, b) = (self.start[c] as usize, self.start[c + 1] as usize);
+            assert!(a <= b, "cell {c} ends before it starts");
+            for s in &self.sorted[a..b] {
+                let id = s.id as usize;
+                assert!(!seen[id], "body {id} twice");
+                seen[id] = true;
+                let p = positions[id];
+                assert_eq!(self.dims.cell_of(p) as usize, c, "body {id} in wrong cell");
+                assert_eq!(s.cell as usize, c, "body {id} labelled with a wrong cell");
+                assert_eq!((s.x, s.y, s.z), (p.x, p.y, p.z), "body {id} stale");
+            }
+            for w in self.sorted[a..b].windows(2) {
+                assert!(w[0].id < w[1].id, "cell {c} not in id order");
+            }
+        }
+        assert!(seen.iter().all(|&s| s), "a body is missing from the cells");
+        self.pairs.assert_well_formed();
+    }
+}
+
+/// Read-only view of the sorted cells, shared by the partitions.
+struct Rows<'a> {
+    reach: f64,
+    dims: Dims,
+    sorted: &'a [Slot],
+    start: &'a [u32],
+}
+
+impl Rows<'_> {
+    /// All candidate pairs whose first body (in slot order) is in z-planes `z0..z1`, body by body,
+    /// into `out`.
+    fn planes(&self, z0: usize, z1: usize, out: &mut PairBuffer) {
+        let Dims { n, nx, .. } = self.dims;
+        let cells = self.dims.cells();
+        let (start, sorted, r) = (self.start, self.sorted, self.reach);
+        let buf = out.storage();
+        let mut len = 0;
+        for iz in z0..z1 {
+            for iy in 0..n {
+                let row = (iz * n + iy) * nx;
+                let up = row + n * nx;
+                // Forward rows (dy, dz) = (1, 0), (-1, 1), (0, 1), (1, 1); `cells` is the empty row.
+                let next = [
+                    if iy + 1 < n { row + nx } else { cells },
+                    if iz + 1 < n && iy > 0 { up - nx } else { cells },
+                    if iz + 1 < n { up } else { cells },
+                    if iz + 1 < n && iy + 1 < n {
+                        up + nx
+                    } else {
+                        cells
+                    },
+                ];
+                for i in start[row] as usize..start[row + nx] as usize {
+                    let p = sorted[i];
+                    let ix = p.cell as usize - row;
+                    let (lo, hi) = (ix.saturating_sub(X_SPLIT), (ix + X_SPLIT + 1).min(nx));
+                    let mut windows = [(i + 1, start[row + hi] as usize); 5];
+                    let mut most = windows[0].1 - windows[0].0;
+                    for (w, &b) in windows[1..].iter_mut().zip(&next) {
+                        *w = (start[b + lo] as usize, start[b + hi] as usize);
+                        most += w.1 - w.0;
+                    }
+                    if buf.len() < len + most {
+                        buf.resize((2 * buf.len()).max(len + most) + 64, (0, 0));
+                    }
+                    for (b0, b1) in windows {
+                        for q in &sorted[b0..b1] {
+                            // Every candidate is written and the cursor advanced only on overlap.
+                            let hit = ((q.x - p.x).abs() <= r)
+                                & ((q.y - p.y).abs() <= r)
+                                & ((q.z - p.z).abs() <= r);
+                            buf[len] = (p.id.min(q.id), p.id.max(q.id));
+                            len += usize::from(hit);
+                        }
+                    }
+                }
+            }
+        }
+        out.set_len(len);
+    }
+}
+
+/// Run `f` on every item: the first on the calling thread, the others on scoped threads.
+fn in_parallel<T: Send, F: Fn(T) + Sync>(items: Vec<T>, f: F) {
+    let mut items = items.into_iter();
+    let Some(first) = items.next() else {
+        return;
+    };
+    if items.len() == 0 {
+        f(first);
+        return;
+    }
+    std::thread::scope(|s| {
+        let f = &f;
+        for item in items {
+            s.spawn(move || f(item));
+        }
+        f(first);
+    });
+}
+
+/// Split items `0..at.len() - 1` into `parts` consecutive runs of about equal weight, where `at`
+/// holds the running total of the weights before each item (and the grand total last): returns
+/// the `parts + 1` boundaries, from 0 to the item count. Runs may be empty.
+fn cut(at: &[u32], parts: usize) -> Vec<usize> {
+    let items = at.len() - 1;
+    let total = at[items] as usize;
+    let mut cuts = Vec::with_capacity(parts + 1);
+    cuts.push(0);
+    for k in 1..parts {
+        let want = total * k / parts;
+        let mut i = cuts[k - 1];
+        while i < items && (at[i] as usize) < want {
+            i += 1;
+        }
+        cuts.push(i);
+    }
+    cuts.push(items);
+    cuts
+}
