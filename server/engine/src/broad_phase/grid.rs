@@ -37,6 +37,9 @@ use crate::math::Vec3;
 /// never put two centres `reach` apart further apart in cells than the neighbourhood searched.
 const CELL_MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
 
+/// Candidate slots of a window tested without a loop (see `Rows::planes`).
+const ALWAYS: usize = 2;
+
 /// x cells per y-z cell width: candidates come from x-cells `ix - X_SPLIT ..= ix + X_SPLIT`.
 const X_SPLIT: usize = 2;
 
@@ -165,7 +168,7 @@ impl Grid {
             bucket_shift,
             bucket_start: vec![0; buckets + 1],
             staged: vec![Slot::default(); bodies],
-            sorted: vec![Slot::default(); bodies],
+            sorted: vec![Slot::default(); bodies + ALWAYS],
             start: vec![0; cells + nx + 1],
             part_counts: Vec::new(),
             cursors: vec![vec![0; (1usize << bucket_shift).min(cells)]],
@@ -426,22 +429,26 @@ impl Rows<'_> {
                     let ix = p.cell as usize - row;
                     let (lo, hi) = (ix.saturating_sub(X_SPLIT), (ix + X_SPLIT + 1).min(nx));
                     let mut windows = [(i + 1, start[row + hi] as usize); 5];
-                    let mut most = windows[0].1 - windows[0].0;
                     for (w, &b) in windows[1..].iter_mut().zip(&next) {
                         *w = (start[b + lo] as usize, start[b + hi] as usize);
-                        most += w.1 - w.0;
                     }
+                    let most: usize = windows.iter().map(|w| w.1 - w.0 + ALWAYS).sum();
                     if buf.len() < len + most {
                         buf.resize((2 * buf.len()).max(len + most) + 64, (0, 0));
                     }
                     for (b0, b1) in windows {
-                        for q in &sorted[b0..b1] {
-                            // Every candidate is written and the cursor advanced only on overlap.
-                            let hit = ((q.x - p.x).abs() <= r)
-                                & ((q.y - p.y).abs() <= r)
-                                & ((q.z - p.z).abs() <= r);
+                        // The first ALWAYS slots are tested whatever the window's length and the
+                        // tests past its end masked: a loop with an unpredictable trip count costs
+                        // a mispredicted exit, about as much as a few tests, and most windows are
+                        // this short (the slots exist: `sorted` is padded).
+                        for (k, q) in sorted[b0..b0 + ALWAYS].iter().enumerate() {
+                            let hit = overlap(&p, q, r) & (b0 + k < b1);
                             buf[len] = (p.id.min(q.id), p.id.max(q.id));
                             len += usize::from(hit);
+                        }
+                        for q in sorted.get(b0 + ALWAYS..b1).unwrap_or_default() {
+                            buf[len] = (p.id.min(q.id), p.id.max(q.id));
+                            len += usize::from(overlap(&p, q, r));
                         }
                     }
                 }
@@ -449,6 +456,14 @@ impl Rows<'_> {
         }
         out.set_len(len);
     }
+}
+
+/// Whether the boxes of two slots overlap (touching counts), as [`super::brute_force_pairs`] has
+/// it. Every candidate's pair is written to the output and the cursor advanced by this, so the
+/// unpredictable outcome costs no branch.
+#[inline(always)]
+fn overlap(p: &Slot, q: &Slot, reach: f64) -> bool {
+    ((q.x - p.x).abs() <= reach) & ((q.y - p.y).abs() <= reach) & ((q.z - p.z).abs() <= reach)
 }
 
 /// Run `f` on every item: the first on the calling thread, the others on scoped threads.
