@@ -10,19 +10,26 @@
 //! which is the right trade at the paper's N, but at a million bodies those lists are scattered
 //! through memory and their repair is dominated by cache misses. Here every pass is a forward scan
 //! over flat arrays:
-//! - the sort is a radix sort in two levels: bodies are read in id order and dealt into a few dozen
-//!   contiguous *buckets* of cells (few enough for the hardware prefetchers to follow every output
-//!   stream), then each bucket, small enough to stay in cache, is counting-sorted by cell;
+//! - the sort is a radix sort in two levels: bodies are read in id order and dealt into at most 32
+//!   contiguous *buckets* of cells (few enough output streams for the hardware prefetchers to
+//!   follow), then each bucket, a few megabytes at most, is counting-sorted by cell;
 //! - cells are numbered x fastest, so the x-cells `ix - 2 ..= ix + 2` of any row are one contiguous
 //!   slice: a body's candidates are five slices (its own row from the next body on, and the four
-//!   forward rows), each scanned without a branch on the (unpredictable) overlap outcome;
+//!   forward rows), each scanned without a branch on the (unpredictable) overlap outcome, and the
+//!   first two slots of each without a loop;
 //! - half-width x cells cut the candidates a body is tested against by about a sixth, compared with
 //!   cubic cells, for one more entry per cell in the cell index.
 //!
+//! Memory is fixed by N: 68 bytes per body (its cell, and the body in two 32-byte layouts), 4 bytes
+//! per cell (about 2.2 cells per body at the paper's density, at most 4 plus a constant), and the pair
+//! buffer, which shrinks after a pathological frame (see [`super::SHRINK_AFTER_FRAMES`]).
+//!
 //! The output depends only on this frame's positions: bodies are ordered by cell, then by id, and
 //! pairs are listed body by body in that order. It does not depend on how many threads produce it:
-//! the z-planes are cut into consecutive partitions, each partition writes its own buffer, and the
-//! buffers are concatenated in partition order.
+//! with several, the first sorting level splits the bodies into consecutive id ranges, the second
+//! the buckets into consecutive runs, and the pair search the z-planes, each part writing its own
+//! output, concatenated in order; every body lands in the same slot and every pair in the same
+//! place as on one thread.
 //!
 //! Positions outside the volume are clamped into the edge cells, which keeps every overlapping pair
 //! within the neighbourhood above because clamping is monotone.
@@ -47,9 +54,9 @@ const X_SPLIT: usize = 2;
 /// ever get wider, which is always correct.
 const MAX_CELLS_PER_BODY: usize = 4;
 
-/// Cells per bucket of the first sorting level, at most `2^MAX_BUCKET_SHIFT`; buckets are aimed at
-/// [`TARGET_BUCKETS`] so that the first level writes few enough streams to stay prefetched while a
-/// bucket still fits in a core's cache at a million bodies.
+/// Cells per bucket of the first sorting level, a power of two at most `2^MAX_BUCKET_SHIFT`, chosen
+/// for at most `TARGET_BUCKETS` buckets: fewer output streams for the first level against larger
+/// buckets for the second. At N = 1,000,000 that is 18 buckets, which sorted faster than 69 or 275.
 const MAX_BUCKET_SHIFT: u32 = 24;
 const TARGET_BUCKETS: usize = 32;
 
@@ -107,6 +114,8 @@ pub(super) struct Grid {
     bucket_shift: u32,
     /// `bucket_start[b]..bucket_start[b + 1]` are bucket b's slots (in `staged` and `sorted`).
     bucket_start: Vec<u32>,
+    /// Cell of each body, in id order (computed once per frame by the first level's count).
+    cell_of_id: Vec<u32>,
     /// Bodies dealt into buckets, in id order within a bucket.
     staged: Vec<Slot>,
     /// Bodies sorted by cell, then id.
@@ -167,6 +176,7 @@ impl Grid {
             bodies,
             bucket_shift,
             bucket_start: vec![0; buckets + 1],
+            cell_of_id: vec![0; bodies],
             staged: vec![Slot::default(); bodies],
             sorted: vec![Slot::default(); bodies + ALWAYS],
             start: vec![0; cells + nx + 1],
@@ -232,13 +242,18 @@ impl Grid {
         self.part_counts.resize(parts * buckets, 0);
         let items = positions
             .chunks(per_part)
+            .zip(self.cell_of_id.chunks_mut(per_part))
             .zip(self.part_counts.chunks_mut(buckets))
             .collect();
-        in_parallel(items, |(chunk, counts): (&[Vec3], &mut [u32])| {
-            for &p in chunk {
-                counts[(dims.cell_of(p) >> shift) as usize] += 1;
-            }
-        });
+        in_parallel(
+            items,
+            |((chunk, cells), counts): ((&[Vec3], &mut [u32]), &mut [u32])| {
+                for (&p, cell) in chunk.iter().zip(cells) {
+                    *cell = dims.cell_of(p);
+                    counts[(*cell >> shift) as usize] += 1;
+                }
+            },
+        );
         // Each bucket holds part 0's bodies, then part 1's, ..., so ids stay in order.
         let mut rest: &mut [Slot] = &mut self.staged;
         let mut outputs: Vec<Vec<&mut [Slot]>> = (0..parts).map(|_| Vec::new()).collect();
@@ -257,28 +272,26 @@ impl Grid {
         // Level 1: deal each part's bodies into its share of every bucket.
         let items = positions
             .chunks(per_part)
+            .zip(self.cell_of_id.chunks(per_part))
             .zip(outputs)
             .enumerate()
             .collect();
-        in_parallel(
-            items,
-            |(t, (chunk, mut out)): (usize, (&[Vec3], Vec<&mut [Slot]>))| {
-                for (k, &p) in chunk.iter().enumerate() {
-                    let cell = dims.cell_of(p);
-                    let b = (cell >> shift) as usize;
-                    if let Some((slot, tail)) = std::mem::take(&mut out[b]).split_first_mut() {
-                        *slot = Slot {
-                            x: p.x,
-                            y: p.y,
-                            z: p.z,
-                            id: (t * per_part + k) as u32,
-                            cell,
-                        };
-                        out[b] = tail;
-                    }
+        type Deal<'a, 'b> = (usize, ((&'a [Vec3], &'a [u32]), Vec<&'b mut [Slot]>));
+        in_parallel(items, |(t, ((chunk, cells), mut out)): Deal<'_, '_>| {
+            for (k, (&p, &cell)) in chunk.iter().zip(cells).enumerate() {
+                let b = (cell >> shift) as usize;
+                if let Some((slot, tail)) = std::mem::take(&mut out[b]).split_first_mut() {
+                    *slot = Slot {
+                        x: p.x,
+                        y: p.y,
+                        z: p.z,
+                        id: (t * per_part + k) as u32,
+                        cell,
+                    };
+                    out[b] = tail;
                 }
-            },
-        );
+            }
+        });
         // Level 2: counting sort of each bucket by cell, parts taking consecutive buckets.
         let cells = dims.cells();
         let cuts = cut(&self.bucket_start, parts);

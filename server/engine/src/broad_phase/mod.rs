@@ -3,7 +3,7 @@
 //! Every body's box is the cube of half-size `h` (the sphere tree's root radius) around its centre,
 //! so two boxes overlap iff the centres are within `2h` on every axis (touching counts). Two
 //! algorithms produce exactly the same set of pairs, each as (smaller id, larger id):
-//! - [`BroadPhaseKind::SweepAndPrune`] (`sap.rs`): the paper's choice, after I-COLLIDE [5]: sorted
+//! - [`BroadPhaseKind::SweepAndPrune`] (`sap.rs`): the paper's choice, after I-COLLIDE \[5\]: sorted
 //!   lists per y-z column kept between frames and repaired by insertion sort, exploiting temporal
 //!   coherence. Its pair *order* is what the schedulers see at the paper's N, and is pinned by the
 //!   golden determinism hash and by a test here.
@@ -52,7 +52,7 @@ pub enum BroadPhaseKind {
     /// Sweep and prune below [`AUTO_GRID_MIN_BODIES`] bodies, the grid from there on.
     #[default]
     Auto,
-    /// Sweep and prune over y-z columns with temporal coherence (paper section 2, I-COLLIDE [5]).
+    /// Sweep and prune over y-z columns with temporal coherence (paper section 2, I-COLLIDE \[5\]).
     SweepAndPrune,
     /// Uniform grid keyed by the box size, counting-sorted every frame.
     Grid,
