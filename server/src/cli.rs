@@ -9,6 +9,7 @@ use std::str::FromStr;
 use std::time::Duration;
 
 use clap::{Parser, ValueEnum};
+use foveal_engine::broad_phase::BroadPhaseKind;
 use foveal_engine::{
     BudgetSpec, ConfigError, EccentricityUnit, PerceptualFunction, PerceptualModel, SchedulerKind,
     SimConfig,
@@ -32,9 +33,19 @@ pub struct Cli {
     /// Sphere-tree depth (1..=6).
     #[arg(long, env = "FOVEAL_DEPTH", default_value_t = 4)]
     pub depth: u32,
-    /// Narrow-phase scheduler.
-    #[arg(long, env = "FOVEAL_SCHEDULER", default_value = "priority-only", value_parser = parse_scheduler)]
+    /// Narrow-phase scheduler. The default, `priced`, orders work by the false-positive perceived
+    /// error a step is expected to remove per sphere test (probabilities and costs calibrated on
+    /// exact runs); on identical frames it reaches 0.72-0.97 of the reduction a clairvoyant
+    /// schedule could make over round-robin under sphere-test budgets (docs/BENCHMARKS.md).
+    #[arg(long, env = "FOVEAL_SCHEDULER", default_value = "priced", value_parser = parse_scheduler)]
     pub scheduler: SchedulerKind,
+    /// Worker threads for the frame's phases (1..=64); results do not depend on it.
+    #[arg(long, env = "FOVEAL_THREADS", default_value_t = 1)]
+    pub threads: u32,
+    /// Broad phase: `auto` (sweep and prune at small N, a uniform grid at large N),
+    /// `sweep-and-prune` or `grid`.
+    #[arg(long, env = "FOVEAL_BROAD_PHASE", default_value = "auto", value_parser = parse_broad_phase)]
+    pub broad_phase: BroadPhaseKind,
     /// Per-frame narrow-phase budget: `exact`, `zero` (deem every pair), `<ms>ms` (wall clock,
     /// e.g. `2.5ms`), `<n>tests` (sphere tests, e.g. `20000tests`), or `<f>x` (fraction of the
     /// exact cost, e.g. `0.3x`).
@@ -46,7 +57,8 @@ pub struct Cli {
     /// Eccentricity (degrees) splitting the priority schedulers' two queues.
     #[arg(long, env = "FOVEAL_ECCENTRICITY_THRESHOLD", default_value_t = 5.0)]
     pub eccentricity_threshold_deg: f64,
-    /// Model the scheduler ranks pairs with: `f1[:unit]`, `f2:<c>[:unit]` or
+    /// Model the scheduler ranks pairs with: `f1[:unit]`, `f2:<c>[:unit]`,
+    /// `f2range:<c_min>,<c_max>[:unit]` (F2 averaged over C log-uniform in the range) or
     /// `f3:<c1>,<c2>,<c3>,<e1>,<e2>[:unit]`, unit `deg` (default) or `px`.
     #[arg(long, env = "FOVEAL_SCHEDULE_MODEL", default_value = "f2:5:deg")]
     pub schedule_model: ModelArg,
@@ -91,6 +103,13 @@ pub enum LogFormat {
     Text,
     /// One JSON object per line (for log collectors).
     Json,
+}
+
+fn parse_broad_phase(s: &str) -> Result<BroadPhaseKind, String> {
+    BroadPhaseKind::from_name(s).ok_or_else(|| {
+        let names: Vec<_> = BroadPhaseKind::ALL.iter().map(|k| k.name()).collect();
+        format!("unknown broad phase `{s}`; one of: {}", names.join(", "))
+    })
 }
 
 fn parse_scheduler(s: &str) -> Result<SchedulerKind, String> {
@@ -168,10 +187,11 @@ impl FromStr for ModelArg {
         let function = match (name, consts.as_slice()) {
             ("f1", []) => PerceptualFunction::F1,
             ("f2", &[c]) => PerceptualFunction::F2 { c },
+            ("f2range", &[c_min, c_max]) => PerceptualFunction::F2Range { c_min, c_max },
             ("f3", &[c1, c2, c3, e1, e2]) => PerceptualFunction::F3 { c1, c2, c3, e1, e2 },
             _ => {
                 return Err(format!(
-                    "model `{s}`: expected `f1[:unit]`, `f2:<c>[:unit]` or `f3:<c1>,<c2>,<c3>,<e1>,<e2>[:unit]` with unit `deg` or `px`"
+                    "model `{s}`: expected `f1[:unit]`, `f2:<c>[:unit]`, `f2range:<c_min>,<c_max>[:unit]` or `f3:<c1>,<c2>,<c3>,<e1>,<e2>[:unit]` with unit `deg` or `px`"
                 ));
             }
         };
@@ -189,6 +209,8 @@ impl Cli {
         sim.scene.seed = self.seed;
         sim.scene.depth = self.depth;
         sim.scheduler = self.scheduler;
+        sim.threads = self.threads;
+        sim.broad_phase = self.broad_phase;
         sim.budget = self.budget.0;
         sim.eccentricity_threshold_deg = self.eccentricity_threshold_deg;
         sim.schedule_model = self.schedule_model.0;
@@ -274,6 +296,14 @@ mod tests {
         assert_eq!(m("f2:5:deg"), Ok(PerceptualModel::default()));
         assert_eq!(m("f2:5"), Ok(PerceptualModel::default()));
         assert!(m("f2").is_err());
+        assert_eq!(
+            m("f2range:1,10").map(|m| m.function),
+            Ok(PerceptualFunction::F2Range {
+                c_min: 1.0,
+                c_max: 10.0
+            })
+        );
+        assert!(m("f2range:10,1").is_err(), "range out of order");
         assert!(m("f2:-1").is_err());
         assert!(m("f3:1,2,3,100,20").is_err(), "breaks out of order");
         let bad = Cli::try_parse_from(["foveal-server", "--frame-rate=0"]).expect("parses");

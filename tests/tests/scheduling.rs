@@ -6,13 +6,14 @@ use foveal_engine::{BudgetSpec, EccentricityUnit, PerceptualFunction, Perceptual
 use foveal_proto::pb;
 use foveal_tests::*;
 
-/// Sum of P and of deemed pairs over `n` frames from `first` on.
+/// Sums of estimated P, true P (audit) and deemed pairs over `n` frames from `first` on.
 async fn perceived_error(
     frames: &mut tonic::Streaming<pb::Frame>,
     first: u64,
     n: usize,
-) -> (f64, u64) {
+) -> (f64, f64, u64) {
     let mut p = 0.0;
+    let mut true_p = 0.0;
     let mut deemed = 0;
     let mut seen = 0;
     while seen < n {
@@ -23,10 +24,11 @@ async fn perceived_error(
         assert_eq!(fixation(&f).source, FixationSource::Gaze as i32);
         let m = f.metrics.expect("metrics");
         p += m.perceived_inaccuracy;
+        true_p += m.audit.expect("audit is on").true_perceived_inaccuracy;
         deemed += m.deemed_at_interruption;
         seen += 1;
     }
-    (p, deemed)
+    (p, true_p, deemed)
 }
 
 async fn configure(
@@ -38,6 +40,8 @@ async fn configure(
             config: Some(pb::SceneConfig {
                 scheduler: scheduler as i32,
                 seed: 3,
+                // A bool cannot be left unset in Configure: say it again.
+                audit: true,
                 ..Default::default()
             }),
         })
@@ -61,6 +65,7 @@ async fn tight_budget_is_spent_near_the_fixation() {
         unit: EccentricityUnit::Degrees,
     };
     config.gaze_max_age = Duration::from_secs(600);
+    config.sim.audit = true;
     let server = TestServer::start(config).await;
     let mut client = server.client().await;
     client
@@ -74,22 +79,27 @@ async fn tight_budget_is_spent_near_the_fixation() {
 
     const FRAMES: usize = 40;
     let first = configure(&mut client, pb::Scheduler::RoundRobin).await;
-    let (p_rr, deemed_rr) = perceived_error(&mut frames, first, FRAMES).await;
-    assert!(deemed_rr > 0, "the budget must bind");
-    // Both runs are deterministic (sphere-test budget, fixed fixation).
-    for (scheduler, at_most) in [
-        (pb::Scheduler::PriorityOnly, 0.8),
-        (pb::Scheduler::ExpectedGain, 0.5),
+    let (p_rr, true_rr, deemed_rr) = perceived_error(&mut frames, first, FRAMES).await;
+    assert!(deemed_rr > 0 && true_rr > 0.0, "the budget must bind");
+    // Every run is deterministic (sphere-test budget, fixed fixation). The paper's schedulers
+    // and expected-gain rank by the estimate, so the estimate is what they must lower; the priced
+    // scheduler deliberately leaves pairs that likely collide (a deemed true collision costs a
+    // viewer nothing), so the true P of the audit is what it must lower.
+    for (scheduler, at_most, truth) in [
+        (pb::Scheduler::PriorityOnly, 0.8, false),
+        (pb::Scheduler::ExpectedGain, 0.5, false),
+        (pb::Scheduler::Priced, 0.5, true),
     ] {
         let first = configure(&mut client, scheduler).await;
-        let (p, deemed) = perceived_error(&mut frames, first, FRAMES).await;
+        let (p, true_p, deemed) = perceived_error(&mut frames, first, FRAMES).await;
         println!(
-            "P over {FRAMES} frames: round-robin {p_rr:.1} ({deemed_rr} deemed), {} {p:.1} ({deemed} deemed)",
+            "P over {FRAMES} frames (estimate, true): round-robin {p_rr:.1}, {true_rr:.2} ({deemed_rr} deemed), {} {p:.1}, {true_p:.2} ({deemed} deemed)",
             scheduler.as_str_name()
         );
+        let (got, base) = if truth { (true_p, true_rr) } else { (p, p_rr) };
         assert!(
-            p < at_most * p_rr,
-            "{}: perceived error {p} not well below round-robin's {p_rr}",
+            got < at_most * base,
+            "{}: perceived error {got} not well below round-robin's {base}",
             scheduler.as_str_name()
         );
     }
@@ -112,8 +122,11 @@ async fn wall_clock_budget_holds() {
         let prof = f.profile.expect("profile");
         let m = f.metrics.expect("metrics");
         exhausted += usize::from(m.budget_exhausted);
-        // The deadline counts from the start of the broad phase and covers broad + narrow.
-        over.push((prof.broad_s + prof.narrow_s) * 1e3 - BUDGET_MS);
+        // The deadline counts from the start of the frame and covers integration, the broad
+        // phase, prioritisation and the narrow phase (response and metrics follow it).
+        over.push(
+            (prof.integrate_s + prof.broad_s + prof.prioritise_s + prof.narrow_s) * 1e3 - BUDGET_MS,
+        );
     }
     over.sort_by(f64::total_cmp);
     let median_over_ms = over[FRAMES / 2];

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use foveal_bench::protocol::{CurvesConfig, StudyConfig};
 use foveal_bench::{GazeSpec, run_study};
+use foveal_engine::SchedulerKind;
 
 fn out_dir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("foveal-bench-{name}-{}", std::process::id()));
@@ -70,8 +71,10 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
     let out = out_dir("tiny");
     let cfg = tiny(out.clone());
     let res = run_study(&cfg).expect("study runs");
-    // 2 N x 2 seeds x (exact + zero + 6 schedulers x (fraction + ms + tests)) + curves 2 x 2 x 6.
-    assert_eq!(res.runs.len(), 2 * 2 * (2 + 6 * 3) + 2 * 2 * 6);
+    // 2 N x 2 seeds x (exact + zero + 7 schedulers x (fraction + ms + tests)) + curves 2 x 2 x 7.
+    let k = SchedulerKind::ALL.len();
+    assert_eq!(k, 7);
+    assert_eq!(res.runs.len(), 2 * 2 * (2 + k * 3) + 2 * 2 * k);
     for f in [
         "table_runs.csv",
         "table_summary.csv",
@@ -96,13 +99,13 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
         }
     }
     let (_, runs) = parse_csv(&out.join("table_runs.csv"), &["part", "mode", "scheduler"]);
-    assert_eq!(runs.len(), 2 * 2 * 20);
+    assert_eq!(runs.len(), 2 * 2 * (2 + k * 3));
     let (h, summary) = parse_csv(
         &out.join("table_summary.csv"),
         &["part", "mode", "scheduler"],
     );
     assert!(h.contains(&"true_p_ci95".to_string()));
-    assert_eq!(summary.len(), 2 * 20);
+    assert_eq!(summary.len(), 2 * (2 + k * 3));
     parse_csv(
         &out.join("curves_summary.csv"),
         &["part", "mode", "scheduler"],

@@ -11,11 +11,12 @@
 use crate::budget::{Clock, FrameBudget, Meter};
 use crate::config::SimConfig;
 use crate::fixation::{Fixation, FrameView};
+use crate::metrics::{self, Fovea};
 use crate::narrow_phase::{NarrowPhase, PairState, PairStatus, separation};
 use crate::perception::Viewer;
 use crate::report::{AuditReport, FOVEAL_DEG, FrameReport, PhaseProfile};
 use crate::schedule::calibration::Calibration;
-use crate::schedule::{self, Needs, Prioritiser, Priorities, Scheduler, Work};
+use crate::schedule::{self, Priorities, Prioritiser, Scheduler, Work};
 use crate::sphere_tree::SphereTree;
 use crate::validate::ConfigError;
 use crate::world::World;
@@ -39,18 +40,20 @@ pub struct Collider {
     config: SimConfig,
     scheduler: Box<dyn Scheduler>,
     prioritiser: Prioritiser,
-    foveal: Prioritiser,
     calibration: Calibration,
     narrow: NarrowPhase,
     priorities: Priorities,
-    foveal_flags: Priorities,
     audit_stack: Vec<(f32, u16, u16, u8, u8)>,
 }
 
 impl Collider {
     /// A collider for `config` (its scheduler, models, threshold and audit switch; the budget is
     /// handed to each call) over `tree` and `viewer`.
-    pub fn new(config: &SimConfig, tree: &SphereTree, viewer: &Viewer) -> Result<Self, ConfigError> {
+    pub fn new(
+        config: &SimConfig,
+        tree: &SphereTree,
+        viewer: &Viewer,
+    ) -> Result<Self, ConfigError> {
         config.validate()?;
         let r = tree.root_radius();
         Ok(Self {
@@ -62,17 +65,6 @@ impl Collider {
                 r,
                 schedule::needs(config.scheduler),
             ),
-            foveal: Prioritiser::new(
-                viewer,
-                &config.measure_model,
-                FOVEAL_DEG,
-                r,
-                Needs {
-                    inner: true,
-                    weight: false,
-                    bodies_only: false,
-                },
-            ),
             calibration: if config.scheduler == crate::config::SchedulerKind::Priced {
                 Calibration::for_tree(tree, &config.scene)?
             } else {
@@ -80,7 +72,6 @@ impl Collider {
             },
             narrow: NarrowPhase::default(),
             priorities: Priorities::default(),
-            foveal_flags: Priorities::default(),
             audit_stack: Vec::new(),
             config: config.clone(),
         })
@@ -132,6 +123,20 @@ impl Collider {
             input.viewer.to_pixels(f.x, f.y)
         });
         let mut meter = Meter::new(budget, clock);
+        if budget == FrameBudget::Unlimited {
+            // Exact: every order gives the same answer, so skip the ordering and resolve every
+            // pair, on several threads when the frame is large.
+            self.priorities.clear();
+            let t1 = clock.now_ns();
+            self.narrow
+                .resolve_all(input.tree, input.world, self.config.threads as usize);
+            self.narrow.remember_witnesses(input.world.len());
+            profile.prioritise_ns = t1 - t0;
+            profile.narrow_ns = clock.now_ns() - t1;
+            r.candidate_pairs = self.narrow.pairs.len() as u32;
+            r.sphere_tests = self.narrow.tests;
+            return;
+        }
         let prioritised = self.prioritises(fixation_px.is_some());
         if prioritised {
             self.prioritiser.prioritise(
@@ -172,7 +177,12 @@ impl Collider {
 
     /// Counts per level, Δ and P (section 3) from the pair states; the foveal counts; and, in audit
     /// mode, the exact answer for every deemed pair.
-    pub fn measure(&mut self, input: &FrameInput<'_>, fixation: Option<Fixation>, r: &mut FrameReport) {
+    pub fn measure(
+        &mut self,
+        input: &FrameInput<'_>,
+        fixation: Option<Fixation>,
+        r: &mut FrameReport,
+    ) {
         let fixation_px = fixation.map(|f| {
             let f = f.clamped();
             input.viewer.to_pixels(f.x, f.y)
@@ -183,42 +193,24 @@ impl Collider {
             model: self.config.measure_model,
         });
         let (tree, world) = (input.tree, input.world);
-        let mut delta = 0.0;
-        let mut p_sum = 0.0;
-        for (i, p) in self.narrow.pairs.iter().enumerate() {
-            match p.status {
-                PairStatus::Colliding => r.real_collisions += 1,
-                PairStatus::Deemed => {
-                    let ev = self.narrow.evidence(i, tree, world);
-                    delta += ev.gap;
-                    if let Some(v) = &view {
-                        p_sum += v.weight(&ev);
-                    }
-                }
-                _ => {}
-            }
-            if p.resolved_level > 0 {
-                r.resolved_per_level[p.resolved_level as usize - 1] += 1;
-            }
-        }
-        r.geometric_inaccuracy = delta;
-        r.perceived_inaccuracy = view.map(|_| p_sum);
-        if let Some(px) = fixation_px {
-            let mut unmetered = Meter::new(FrameBudget::Unlimited, &crate::FrozenClock);
-            self.foveal.prioritise(
-                &self.narrow.pairs,
-                world,
-                input.viewer,
-                Some(px),
-                &mut self.foveal_flags,
-                &mut unmetered,
-            );
-            for (i, p) in self.narrow.pairs.iter().enumerate() {
-                let inner = self.foveal_flags.inner(i);
-                r.foveal_pairs += u32::from(inner);
-                r.foveal_deemed += u32::from(inner && p.status == PairStatus::Deemed);
-            }
-        }
+        let fovea = fixation_px.map(|px| Fovea::new(input.viewer, px, FOVEAL_DEG));
+        let m = metrics::measure(
+            &self.narrow,
+            tree,
+            world,
+            view.as_ref(),
+            fovea.as_ref(),
+            self.config.threads as usize,
+        );
+        r.real_collisions = m.real;
+        r.resolved_per_level = m.per_level;
+        r.geometric_inaccuracy = m.delta;
+        r.perceived_inaccuracy = view.map(|_| m.p);
+        r.metrics_stride = m.stride;
+        r.geometric_inaccuracy_se = m.delta_se;
+        r.perceived_inaccuracy_se = view.map(|_| m.p_se);
+        r.foveal_pairs = m.foveal;
+        r.foveal_deemed = m.foveal_deemed;
         if self.config.audit {
             r.audit = Some(audit(
                 &self.narrow,

@@ -238,6 +238,8 @@ pub struct SimConfig {
     /// Frames the calibration copy runs first, uncounted: random placement starts the scene with
     /// deep overlaps that cost 2-4x the steady state for about a second of simulated time.
     pub calibration_warmup: u32,
+    /// Broad-phase algorithm (`auto` picks by the number of bodies).
+    pub broad_phase: crate::broad_phase::BroadPhaseKind,
     /// Ablation switches of the priced scheduler (all on by default).
     pub priced: crate::schedule::PricedOptions,
     /// Worker threads the frame's phases may use (1..=64). Results do not depend on it: under a
@@ -250,7 +252,7 @@ impl Default for SimConfig {
         Self {
             scene: SceneConfig::default(),
             budget: BudgetSpec::Exact,
-            scheduler: SchedulerKind::PriorityOnly,
+            scheduler: SchedulerKind::Priced,
             eccentricity_threshold_deg: 5.0,
             schedule_model: PerceptualModel::default(),
             measure_model: PerceptualModel::default(),
@@ -260,6 +262,7 @@ impl Default for SimConfig {
             calibration_frames: 30,
             calibration_warmup: 60,
             threads: 1,
+            broad_phase: crate::broad_phase::BroadPhaseKind::Auto,
             priced: crate::schedule::PricedOptions::default(),
         }
     }

@@ -19,6 +19,7 @@
 //! - [`perception`], [`fixation`]: camera, display, visual angle, F1/F2/F3.
 //! - [`falloff`]: the models' eccentricity fall-off tabulated for per-pair lookup without libm.
 //! - [`response`]: velocity exchange.
+//! - [`metrics`]: Δ, P and counts of a frame, exact or sampled with a stated error.
 //! - [`report`]: the frame record, the phase profile and the audit.
 //! - [`collider`]: prioritise, narrow phase, metrics and audit on frames handed in (closed and
 //!   open loop); [`clairvoyant`]: the least true P any schedule could reach with a budget.
@@ -49,6 +50,7 @@ pub mod export;
 pub mod falloff;
 pub mod fixation;
 pub mod math;
+pub mod metrics;
 pub mod narrow_phase;
 pub mod perception;
 pub mod report;

@@ -17,6 +17,10 @@ use crate::math::{LMat3, LVec3, Vec3};
 use crate::sphere_tree::SphereTree;
 use crate::world::World;
 
+/// Fewest pairs for which [`NarrowPhase::resolve_all`] splits the work over threads: a thread
+/// costs tens of microseconds to start, which 20,000 pairs (about a millisecond of tests) repay.
+pub const PARALLEL_MIN_PAIRS: usize = 20_000;
+
 /// Marker for "no sphere pair tested yet".
 const NONE: u16 = u16::MAX;
 
@@ -211,6 +215,8 @@ pub struct NarrowPhase {
     /// Per body: a partner it collided with last frame and the leaf pair that proved it.
     witness: Vec<Witness>,
     spare: Vec<[u16; 2]>,
+    /// Scratch arenas of the extra lanes of [`Self::resolve_all`].
+    lane_arenas: Vec<Vec<[u16; 2]>>,
     /// Sphere tests done this frame.
     pub tests: u64,
 }
@@ -262,7 +268,169 @@ impl NarrowPhase {
     /// Advance pair `i` by one level of one tree. A pair that collided last frame first re-tests the
     /// leaf pair that proved it (one test); if that still overlaps, the pair is resolved colliding
     /// at the leaves, exactly as its full descent would have.
+    #[inline]
     pub fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
+        let mut lane = Lane {
+            pairs: &mut self.pairs,
+            frames: &mut self.frames,
+            arena: &mut self.arena,
+            witness: &self.witness,
+            tests: self.tests,
+        };
+        let o = lane.step(i, tree, world);
+        self.tests = lane.tests;
+        o
+    }
+
+    /// Resolve every open pair exactly, on up to `threads` threads over contiguous runs of pairs
+    /// (the calling thread takes the first). Each pair's traversal is independent of the others',
+    /// so the states, the test count and the witnesses are bit-identical to resolving the pairs
+    /// one after another; below [`PARALLEL_MIN_PAIRS`] pairs, one thread is used.
+    pub fn resolve_all(&mut self, tree: &SphereTree, world: &World, threads: usize) {
+        let n = self.pairs.len();
+        // A pair already active keeps its list in the main arena: only a fresh frame splits.
+        let fresh = !self.pairs.iter().any(|p| p.status == PairStatus::Active);
+        let parts = if n < PARALLEL_MIN_PAIRS || !fresh {
+            1
+        } else {
+            threads.clamp(1, 64)
+        };
+        if parts == 1 {
+            for i in 0..n {
+                if self.pairs[i].status.is_open() {
+                    self.resolve_fully(i, tree, world);
+                }
+            }
+            return;
+        }
+        let size = n.div_ceil(parts);
+        self.lane_arenas.resize_with(parts - 1, Vec::new);
+        let witness = &self.witness;
+        let mut first_arena = std::mem::take(&mut self.arena);
+        let mut lanes: Vec<Lane<'_>> = self
+            .pairs
+            .chunks_mut(size)
+            .zip(self.frames[..n].chunks_mut(size))
+            .zip(std::iter::once(&mut first_arena).chain(self.lane_arenas.iter_mut()))
+            .map(|((pairs, frames), arena)| Lane {
+                pairs,
+                frames,
+                arena,
+                witness,
+                tests: 0,
+            })
+            .collect();
+        let resolve = |lane: &mut Lane<'_>| {
+            for i in 0..lane.pairs.len() {
+                if lane.pairs[i].status.is_open() {
+                    while lane.step(i, tree, world) == StepOutcome::Active {}
+                }
+            }
+            // Resolved pairs keep no list: the scratch is free for the next frame.
+            lane.arena.clear();
+        };
+        std::thread::scope(|s| {
+            let mut it = lanes.iter_mut();
+            let first = it.next();
+            for lane in it {
+                s.spawn(move || resolve(lane));
+            }
+            if let Some(lane) = first {
+                resolve(lane);
+            }
+        });
+        let tests: u64 = lanes.iter().map(|l| l.tests).sum();
+        drop(lanes);
+        self.arena = first_arena;
+        self.tests += tests;
+    }
+
+    /// Step pair `i` until it is resolved (no budget).
+    pub fn resolve_fully(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
+        loop {
+            let o = self.step(i, tree, world);
+            if o != StepOutcome::Active {
+                return o;
+            }
+        }
+    }
+
+    /// Copy the pending lists of open pairs to a fresh, dense arena when most of the arena is dead
+    /// (lists superseded by later steps). Round-robin scheduling touches every pair once per round,
+    /// so without this each step reads a list written a whole round earlier, far away in memory.
+    pub fn compact_if_sparse(&mut self) {
+        let live: usize = self.pairs.iter().map(|p| p.pending() as usize).sum();
+        if self.arena.len() < 4 * live + 4096 {
+            return;
+        }
+        self.spare.clear();
+        for p in &mut self.pairs {
+            if p.status == PairStatus::Active {
+                let (lo, hi) = (p.list_start as usize, (p.list_start + p.list_len) as usize);
+                p.list_start = self.spare.len() as u32;
+                self.spare.extend_from_slice(&self.arena[lo..hi]);
+            }
+        }
+        std::mem::swap(&mut self.arena, &mut self.spare);
+    }
+
+    /// Deem every open pair colliding (interruption, section 2). Returns how many were deemed.
+    pub fn deem_open(&mut self) -> u32 {
+        let mut n = 0;
+        for p in &mut self.pairs {
+            if p.status.is_open() {
+                p.status = PairStatus::Deemed;
+                n += 1;
+            }
+        }
+        n
+    }
+
+    /// The evidence behind pair `i`'s current state: the last overlapping sphere pair, or the two
+    /// body centres and bounding spheres if nothing was tested (section 3's gap estimate).
+    pub fn evidence(&self, i: usize, tree: &SphereTree, world: &World) -> Evidence {
+        let p = &self.pairs[i];
+        let (pa, pb) = (world.position[p.a as usize], world.position[p.b as usize]);
+        if p.last[0] == NONE {
+            let r = tree.root_radius();
+            return Evidence {
+                center_a: pa,
+                center_b: pb,
+                gap: (pb - pa).length(),
+                centre_of_collision: centre_of_collision(pa, r, pb, r),
+            };
+        }
+        let sa = tree.sphere(p.last[0] as usize);
+        let sb = tree.sphere(p.last[1] as usize);
+        let basis = glam::Mat3::from(world.basis[p.a as usize]).as_dmat3();
+        let local_a = LVec3::from_vec4(sa).as_dvec3();
+        let local_b = self.frames[i].map(sb).as_dvec3();
+        let (ca, cb) = (pa + basis * local_a, pa + basis * local_b);
+        Evidence {
+            center_a: ca,
+            center_b: cb,
+            gap: (local_b - local_a).length(),
+            centre_of_collision: centre_of_collision(ca, f64::from(sa.w), cb, f64::from(sb.w)),
+        }
+    }
+}
+
+/// Mutable view of a run of pairs with its own scratch arena: what one step needs. Lanes over
+/// disjoint runs can step in parallel ([`NarrowPhase::resolve_all`]).
+struct Lane<'a> {
+    pairs: &'a mut [PairState],
+    frames: &'a mut [PairFrame],
+    arena: &'a mut Vec<[u16; 2]>,
+    witness: &'a [Witness],
+    tests: u64,
+}
+
+impl Lane<'_> {
+    /// Advance pair `i` by one level of one tree. A pair that collided last frame first re-tests the
+    /// leaf pair that proved it (one test); if that still overlaps, the pair is resolved colliding
+    /// at the leaves, exactly as its full descent would have.
+    #[inline]
+    fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
         let depth = tree.depth() as u8;
         let p = self.pairs[i];
         debug_assert!(p.status.is_open());
@@ -379,75 +547,6 @@ impl NarrowPhase {
         st.list_start = start as u32;
         st.list_len = found as u32;
         StepOutcome::Active
-    }
-
-    /// Step pair `i` until it is resolved (no budget).
-    pub fn resolve_fully(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
-        loop {
-            let o = self.step(i, tree, world);
-            if o != StepOutcome::Active {
-                return o;
-            }
-        }
-    }
-
-    /// Copy the pending lists of open pairs to a fresh, dense arena when most of the arena is dead
-    /// (lists superseded by later steps). Round-robin scheduling touches every pair once per round,
-    /// so without this each step reads a list written a whole round earlier, far away in memory.
-    pub fn compact_if_sparse(&mut self) {
-        let live: usize = self.pairs.iter().map(|p| p.pending() as usize).sum();
-        if self.arena.len() < 4 * live + 4096 {
-            return;
-        }
-        self.spare.clear();
-        for p in &mut self.pairs {
-            if p.status == PairStatus::Active {
-                let (lo, hi) = (p.list_start as usize, (p.list_start + p.list_len) as usize);
-                p.list_start = self.spare.len() as u32;
-                self.spare.extend_from_slice(&self.arena[lo..hi]);
-            }
-        }
-        std::mem::swap(&mut self.arena, &mut self.spare);
-    }
-
-    /// Deem every open pair colliding (interruption, section 2). Returns how many were deemed.
-    pub fn deem_open(&mut self) -> u32 {
-        let mut n = 0;
-        for p in &mut self.pairs {
-            if p.status.is_open() {
-                p.status = PairStatus::Deemed;
-                n += 1;
-            }
-        }
-        n
-    }
-
-    /// The evidence behind pair `i`'s current state: the last overlapping sphere pair, or the two
-    /// body centres and bounding spheres if nothing was tested (section 3's gap estimate).
-    pub fn evidence(&self, i: usize, tree: &SphereTree, world: &World) -> Evidence {
-        let p = &self.pairs[i];
-        let (pa, pb) = (world.position[p.a as usize], world.position[p.b as usize]);
-        if p.last[0] == NONE {
-            let r = tree.root_radius();
-            return Evidence {
-                center_a: pa,
-                center_b: pb,
-                gap: (pb - pa).length(),
-                centre_of_collision: centre_of_collision(pa, r, pb, r),
-            };
-        }
-        let sa = tree.sphere(p.last[0] as usize);
-        let sb = tree.sphere(p.last[1] as usize);
-        let basis = glam::Mat3::from(world.basis[p.a as usize]).as_dmat3();
-        let local_a = LVec3::from_vec4(sa).as_dvec3();
-        let local_b = self.frames[i].map(sb).as_dvec3();
-        let (ca, cb) = (pa + basis * local_a, pa + basis * local_b);
-        Evidence {
-            center_a: ca,
-            center_b: cb,
-            gap: (local_b - local_a).length(),
-            centre_of_collision: centre_of_collision(ca, f64::from(sa.w), cb, f64::from(sb.w)),
-        }
     }
 }
 

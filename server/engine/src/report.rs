@@ -80,6 +80,13 @@ pub struct FrameReport {
     pub resolved_per_level: [u32; MAX_DEPTH],
     /// Sphere tests done by the narrow phase.
     pub sphere_tests: u64,
+    /// Sampling stride of Δ and P: 1 when every deemed pair was summed, k when the deemed pairs
+    /// of index divisible by k were (see `metrics`).
+    pub metrics_stride: u32,
+    /// Standard error of Δ from sampling (0 when exact).
+    pub geometric_inaccuracy_se: f64,
+    /// Standard error of P from sampling (0 when exact; None without a fixation).
+    pub perceived_inaccuracy_se: Option<f64>,
     /// Candidate pairs whose centre lies within [`FOVEAL_DEG`] of the fixation (0 without one).
     pub foveal_pairs: u32,
     /// Of those, pairs deemed at interruption rather than settled exactly.

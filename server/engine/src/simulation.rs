@@ -41,7 +41,14 @@ impl Simulation {
         let tree = SphereTree::build(Star::new(sc.shape_radius), sc.depth as usize)?;
         let world = World::generate(sc);
         let side = sc.volume_side();
-        let broad = BroadPhase::new(tree.root_radius(), world.lo, side, world.len());
+        let mut broad = BroadPhase::with_kind(
+            config.broad_phase,
+            tree.root_radius(),
+            world.lo,
+            side,
+            world.len(),
+        );
+        broad.set_threads(config.threads as usize);
         let viewer = Viewer::new(&config.camera, &config.display, world.lo, side);
         let mut sim = Self::from_parts(config, tree, world, broad, viewer)?;
         sim.budget = match sim.config.budget {
@@ -214,7 +221,8 @@ impl Simulation {
 
     /// Phase: advance every body by one time step.
     fn integrate(&mut self) {
-        self.world.integrate(self.config.scene.dt);
+        self.world
+            .integrate_threads(self.config.scene.dt, self.config.threads as usize);
     }
 
     /// Phase: exchange the velocities of approaching pairs on the collision list (real and deemed).

@@ -58,3 +58,33 @@ fn golden_hash_over_1000_frames() {
 }
 
 const GOLDEN: u64 = 0x7904_a867_ee1c_c15b;
+
+/// Frame reports over a few frames at a size where integration, the exact narrow phase and the
+/// metrics split over threads: identical bits for 1 and 2 threads, exact and under a sphere-test
+/// budget.
+#[test]
+fn one_and_two_threads_give_identical_reports() {
+    for budget in [BudgetSpec::Exact, BudgetSpec::SphereTests(150_000)] {
+        let run = |threads: u32| {
+            let mut cfg = SimConfig::default();
+            cfg.scene.bodies = 12_000;
+            cfg.scene.seed = 5;
+            cfg.scheduler = SchedulerKind::Priced;
+            cfg.budget = budget;
+            cfg.threads = threads;
+            let mut sim = Simulation::new(cfg).expect("valid");
+            let mut h = Fnv1a::default();
+            for f in 0..3 {
+                let r = sim.step(gaze(f), &FrozenClock);
+                r.hash_into(&mut h);
+                h.u64(u64::from(r.foveal_pairs));
+                h.u64(u64::from(r.foveal_deemed));
+            }
+            for p in &sim.world().position {
+                h.f64(p.x);
+            }
+            h.0
+        };
+        assert_eq!(run(1), run(2), "{budget:?}");
+    }
+}

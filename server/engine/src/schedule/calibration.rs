@@ -10,8 +10,8 @@
 //! always collide, and a pair whose overlap list has grown long is expensive to finish.
 //!
 //! A state is keyed by the stage of the traversal (0 untested, then one per level descended), the
-//! length of the overlap list (log2 buckets; for untested pairs, whether last frame's witness leaf
-//! pair will be re-tested), and the centre distance over the root diameter (16 buckets). Sparse bins
+//! length of the overlap list (16 buckets; for untested pairs, whether last frame's witness leaf
+//! pair will be re-tested), and the centre distance over the root diameter (32 buckets). Sparse bins
 //! are shrunk towards the pooled estimate of their (stage, list) row and that towards the stage, so
 //! every bin has a usable value. Keys are scale-free (distances over the root diameter, gaps over the
 //! shape radius), so the table holds for any shape radius; it is tied to the tree depth, and a
@@ -30,11 +30,32 @@ use crate::validate::ConfigError;
 use crate::{BudgetSpec, FrozenClock, SchedulerKind, SimConfig, Simulation};
 
 /// Centre-distance buckets (over the root diameter) per state.
-pub const DIST_BUCKETS: usize = 16;
+pub const DIST_BUCKETS: usize = 32;
 /// Centre distance / root diameter covered by the buckets; candidate pairs reach sqrt(3).
 const DIST_RANGE: f32 = 2.0;
-/// Overlap-list buckets (log2 of the list length, capped).
-pub const LIST_BUCKETS: usize = 8;
+/// Overlap-list buckets: lengths 1 to 8 each their own, then 9-12, 13-16, 17-24, 25-32, 33-48,
+/// 49-64, 65-128 and beyond (see [`list_bucket`]).
+pub const LIST_BUCKETS: usize = 32;
+/// Length buckets of [`list_bucket`]; the list key is that bucket plus this for pairs with a
+/// witness from last frame (which most likely collide again, at every stage).
+const LENGTH_BUCKETS: usize = 16;
+
+/// Bucket of an overlap-list length: exact up to 8 (where a pair's first descents land), then
+/// half-octaves.
+#[inline]
+pub fn list_bucket(len: u32) -> usize {
+    match len {
+        0..=8 => len.max(1) as usize - 1,
+        9..=12 => 8,
+        13..=16 => 9,
+        17..=24 => 10,
+        25..=32 => 11,
+        33..=48 => 12,
+        49..=64 => 13,
+        65..=128 => 14,
+        _ => 15,
+    }
+}
 /// Pseudo-count of the shrinkage towards the pooled estimate, for bins with fewer than
 /// [`DENSE`] observations; denser bins stand on their own (a pooled cost can be 40 tests where
 /// the bin's own is exactly 1).
@@ -121,15 +142,17 @@ fn index_bucket(stage: u8, list_key: usize, bucket: u8) -> usize {
     (stage as usize * LIST_BUCKETS + list_key) * DIST_BUCKETS + bucket as usize
 }
 
-/// The list key of pair `i`: witness flag when untested, else log2 of its overlap list.
+/// The list key of pair `i`: its overlap-list bucket (0 when untested), plus
+/// [`LENGTH_BUCKETS`] if it has a witness from last frame.
 #[inline]
 fn list_key(np: &NarrowPhase, i: usize) -> usize {
     let p = &np.pairs[i];
-    if p.stage() == 0 {
-        usize::from(np.has_witness(i))
+    let len = if p.stage() == 0 {
+        0
     } else {
-        (p.pending().max(1).ilog2() as usize).min(LIST_BUCKETS - 1)
-    }
+        list_bucket(p.pending())
+    };
+    len + LENGTH_BUCKETS * usize::from(np.has_witness(i))
 }
 
 impl Calibration {
@@ -307,7 +330,8 @@ impl Observations {
                 np.reset(sim.candidate_pairs());
                 for i in 0..np.pairs.len() {
                     let (a, b) = (np.pairs[i].a as usize, np.pairs[i].b as usize);
-                    let dist = (world.position[b] - world.position[a]).length() as f32 * inv_diameter;
+                    let dist =
+                        (world.position[b] - world.position[a]).length() as f32 * inv_diameter;
                     visits.clear();
                     let outcome = loop {
                         let stage = np.pairs[i].stage();
@@ -463,7 +487,12 @@ mod tests {
         // Untested pairs whose root spheres cannot touch (distance over the diameter > 1) are
         // settled separate by their one root test.
         let far = &cal.bins[index(0, 0, 1.3)];
-        assert!(far.count > 0 && far.p_separate > 0.9 && far.cost < 1.5, "{far:?}");
+        let witnessed = &cal.bins[index(0, LENGTH_BUCKETS, 0.6)];
+        assert!(witnessed.p_separate < 0.5, "{witnessed:?}");
+        assert!(
+            far.count > 0 && far.p_separate > 0.9 && far.cost < 1.5,
+            "{far:?}"
+        );
         // Closer centres collide more often: the nearest well-observed distance bucket of untested
         // pairs is far more likely to collide than the far one.
         let near = (0..DIST_BUCKETS)

@@ -15,7 +15,7 @@ mod sequential;
 
 pub use expected_gain::ExpectedGain;
 pub use priced::{Priced, PricedOptions};
-pub use priority::{Needs, Prioritiser, Priorities};
+pub use priority::{Needs, Priorities, Prioritiser};
 pub use priority_queue::PriorityQueue;
 pub use round_robin::RoundRobin;
 pub use sequential::Sequential;

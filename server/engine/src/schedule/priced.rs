@@ -65,6 +65,10 @@ impl PricedOptions {
     }
 }
 
+/// How far (in quarter octaves) a pair being worked on may fall below the best waiting pair before
+/// it is put back: 8 is a factor of 4.
+const COMMIT_BUCKETS: usize = 1;
+
 /// Buckets of the queue: f32 exponent and two mantissa bits of a positive value.
 const BUCKETS: usize = 1024;
 const WORDS: usize = BUCKETS / 64;
@@ -121,6 +125,16 @@ impl BucketQueue {
         self.mask[k / 64] |= 1 << (k % 64);
         self.summary |= 1 << (k / 64);
         self.len += 1;
+    }
+
+    /// Key of the best waiting entry (0 when empty).
+    #[inline]
+    fn top_key(&self) -> usize {
+        if self.summary == 0 {
+            return 0;
+        }
+        let w = 15 - self.summary.leading_zeros() as usize;
+        w * 64 + 63 - self.mask[w].leading_zeros() as usize
     }
 
     #[inline]
@@ -222,13 +236,23 @@ impl Scheduler for Priced {
             self.queue.push(w * self.ratio[k], i as u32);
         }
         while let Some(pair) = self.queue.pop() {
-            if meter.exhausted(np.tests) {
-                return;
-            }
             let i = pair as usize;
-            if np.step(i, work.tree, work.world) == StepOutcome::Active {
+            // Work on the pair while it stays within COMMIT_BUCKETS of the best other one: a
+            // descent abandoned half way is sphere tests spent for nothing, and re-pricing after
+            // every step would hop between near-equal pairs and leave many of them half done.
+            loop {
+                if meter.exhausted(np.tests) {
+                    return;
+                }
+                if np.step(i, work.tree, work.world) != StepOutcome::Active {
+                    break;
+                }
                 let k = cal.index_of(np, i, self.dist[i]);
-                self.queue.push(self.weight[i] * self.ratio[k], pair);
+                let v = self.weight[i] * self.ratio[k];
+                if BucketQueue::key(v) + COMMIT_BUCKETS < self.queue.top_key() {
+                    self.queue.push(v, pair);
+                    break;
+                }
             }
         }
         debug_assert_eq!(self.queue.len, 0);

@@ -74,33 +74,53 @@ impl Priorities {
     /// Eccentricity fall-off at body `b`'s centre (1 without a fixation or before the body pass).
     #[inline]
     pub fn body_falloff(&self, b: usize) -> f32 {
-        if self.bodies_done { self.body_falloff[b] } else { 1.0 }
+        if self.bodies_done {
+            self.body_falloff[b]
+        } else {
+            1.0
+        }
     }
 
     /// Per-body records of the last body pass: position relative to the volume corner, and the
     /// body's scale times its fall-off (scale alone with `gaze` off). Empty before the pass.
     #[inline]
     pub fn body_records(&self) -> &[[f32; 4]] {
-        if self.bodies_done { &self.body_record } else { &[] }
+        if self.bodies_done {
+            &self.body_record
+        } else {
+            &[]
+        }
     }
 
     /// The model's gap unit per scene unit at body `b` (1 before the body pass).
     #[inline]
     pub fn body_scale(&self, b: usize) -> f32 {
-        if self.bodies_done { self.body[b].scale } else { 1.0 }
+        if self.bodies_done {
+            self.body[b].scale
+        } else {
+            1.0
+        }
     }
 
     /// F of the scheduling model on pair `i`'s untested evidence (body centres): the paper's
     /// priority, higher first; 0 if not prioritised.
     #[inline]
     pub fn weight(&self, i: usize) -> f32 {
-        if i < self.reached { self.weight[i] } else { 0.0 }
+        if i < self.reached {
+            self.weight[i]
+        } else {
+            0.0
+        }
     }
 
     /// Eccentricity fall-off F(1, e) at pair `i`'s centre; 1 without a fixation.
     #[inline]
     pub fn falloff(&self, i: usize) -> f32 {
-        if i < self.reached { self.falloff[i] } else { 1.0 }
+        if i < self.reached {
+            self.falloff[i]
+        } else {
+            1.0
+        }
     }
 
     /// The model's gap unit per scene unit at pair `i` (pixels or degrees per unit length).
@@ -189,9 +209,7 @@ impl Prioritiser {
         let ray = [v[0] * inv, v[1] * inv, v[2] * inv];
         let scale = match self.falloff.unit() {
             // A degree per pixel shrinks as cos^2 of the angle off the screen's axis.
-            EccentricityUnit::Degrees => {
-                s as f32 * (pitch / dist) * ray[2] * ray[2] * 57.295_78
-            }
+            EccentricityUnit::Degrees => s as f32 * (pitch / dist) * ray[2] * ray[2] * 57.295_78,
             EccentricityUnit::Pixels => s as f32,
         };
         BodyView { px, ray, scale }
@@ -223,7 +241,12 @@ impl Prioritiser {
         let n = pairs.len();
         out.reached = 0;
         out.bodies_done = false;
-        for v in [&mut out.weight, &mut out.falloff, &mut out.scale, &mut out.dist] {
+        for v in [
+            &mut out.weight,
+            &mut out.falloff,
+            &mut out.scale,
+            &mut out.dist,
+        ] {
             if v.len() < n {
                 v.resize(n, 0.0);
             }

@@ -1,0 +1,283 @@
+//! A frame's metrics (paper section 3): Δ and P summed over the deemed pairs, counts per level,
+//! and the pairs in the fovea, at a cost the frame can afford.
+//!
+//! Δ and P need each deemed pair's evidence (a projection and two visual angles for P), about a
+//! hundred nanoseconds a pair; at a million bodies under a tight budget over a million pairs are
+//! deemed, and summing them all would cost more than the frame. So:
+//! - up to [`EXACT_LIMIT`] deemed pairs, every one is summed (exact);
+//! - beyond it, a systematic sample is summed: the deemed pairs whose index is a multiple of the
+//!   stride k, scaled by k, with its standard error (Bernoulli sampling at rate 1/k:
+//!   se^2 = (1 - 1/k) k^2 sum of the sampled x^2). The report says the stride and both errors.
+//!
+//! Work is split into fixed runs of [`CHUNK`] pairs whose partial sums are added in run order,
+//! so the result is the same for every thread count; a frame of at most one run sums in plain
+//! pair order.
+
+use crate::fixation::FrameView;
+use crate::narrow_phase::{NarrowPhase, PairStatus};
+use crate::perception::Viewer;
+use crate::sphere_tree::SphereTree;
+use crate::world::World;
+
+/// Most deemed pairs whose evidence is summed exactly; beyond, a sample of about this many.
+pub const EXACT_LIMIT: u32 = 100_000;
+/// Pairs per run of the chunked sums.
+pub const CHUNK: usize = 32_768;
+
+/// What the metrics pass found.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Metrics {
+    /// Δ (exact, or the sample's estimate).
+    pub delta: f64,
+    /// P with the view's model (0 without a view).
+    pub p: f64,
+    /// Standard error of Δ (0 when exact).
+    pub delta_se: f64,
+    /// Standard error of P (0 when exact).
+    pub p_se: f64,
+    /// Sampling stride (1: exact).
+    pub stride: u32,
+    /// Pairs resolved colliding.
+    pub real: u32,
+    /// Pairs resolved at each level.
+    pub per_level: [u32; crate::config::MAX_DEPTH],
+    /// Candidate pairs within the foveal threshold of the fixation.
+    pub foveal: u32,
+    /// Of those, deemed.
+    pub foveal_deemed: u32,
+}
+
+#[derive(Debug, Clone, Copy, Default)]
+struct Part {
+    m: Metrics,
+    delta_sq: f64,
+    p_sq: f64,
+}
+
+impl Part {
+    fn add(&mut self, o: &Part) {
+        self.m.delta += o.m.delta;
+        self.m.p += o.m.p;
+        self.delta_sq += o.delta_sq;
+        self.p_sq += o.p_sq;
+        self.m.real += o.m.real;
+        for (a, b) in self.m.per_level.iter_mut().zip(o.m.per_level) {
+            *a += b;
+        }
+        self.m.foveal += o.m.foveal;
+        self.m.foveal_deemed += o.m.foveal_deemed;
+    }
+}
+
+/// A fovea test: whether a world point is within a visual angle of the fixation, exact in f64
+/// but skipping the angle for points clearly outside by their pixel distance.
+#[derive(Debug, Clone, Copy)]
+pub struct Fovea<'a> {
+    viewer: &'a Viewer,
+    fixation_px: [f64; 2],
+    /// Degrees of the threshold.
+    threshold_deg: f64,
+    /// Pixel radius beyond which no point can be within the threshold.
+    max_px: f64,
+}
+
+impl<'a> Fovea<'a> {
+    /// Points within `threshold_deg` of `fixation_px`.
+    pub fn new(viewer: &'a Viewer, fixation_px: [f64; 2], threshold_deg: f64) -> Self {
+        let d = &viewer.display;
+        // A pixel subtends the least angle at the screen's farthest corner from the eye's axis:
+        // pitch * cos^2(theta) / distance radians, theta the corner's angle off the axis.
+        let half_diag =
+            0.5 * f64::from(d.width_px).hypot(f64::from(d.height_px)) * d.pixel_pitch_cm();
+        let cos = d.viewing_distance_cm / half_diag.hypot(d.viewing_distance_cm);
+        let min_deg_per_px = (d.pixel_pitch_cm() * cos * cos / d.viewing_distance_cm).to_degrees();
+        // Off screen the angle per pixel keeps falling; a generous factor covers the margin a
+        // fixation or a body may have beyond the edge.
+        let max_px = 4.0 * threshold_deg / min_deg_per_px.max(1e-12);
+        Self {
+            viewer,
+            fixation_px,
+            threshold_deg,
+            max_px,
+        }
+    }
+
+    /// Whether the screen point `px` is within the threshold.
+    #[inline]
+    pub fn contains_px(&self, px: [f64; 2]) -> bool {
+        let (dx, dy) = (px[0] - self.fixation_px[0], px[1] - self.fixation_px[1]);
+        dx * dx + dy * dy <= self.max_px * self.max_px
+            && self.viewer.display.visual_angle_deg(px, self.fixation_px) <= self.threshold_deg
+    }
+}
+
+/// Sum the metrics of `np`'s pairs on up to `threads` threads. `view` measures P (None: P is 0);
+/// `fovea` counts foveal pairs (None: 0).
+pub fn measure(
+    np: &NarrowPhase,
+    tree: &SphereTree,
+    world: &World,
+    view: Option<&FrameView<'_>>,
+    fovea: Option<&Fovea<'_>>,
+    threads: usize,
+) -> Metrics {
+    measure_with_limit(np, tree, world, view, fovea, threads, EXACT_LIMIT)
+}
+
+fn measure_with_limit(
+    np: &NarrowPhase,
+    tree: &SphereTree,
+    world: &World,
+    view: Option<&FrameView<'_>>,
+    fovea: Option<&Fovea<'_>>,
+    threads: usize,
+    limit: u32,
+) -> Metrics {
+    let deemed = np
+        .pairs
+        .iter()
+        .filter(|p| p.status == PairStatus::Deemed)
+        .count() as u32;
+    let stride = deemed.div_ceil(limit.max(1)).max(1) as usize;
+    let run = |lo: usize, hi: usize| -> Part {
+        let mut part = Part::default();
+        for i in lo..hi {
+            let p = &np.pairs[i];
+            match p.status {
+                PairStatus::Colliding => part.m.real += 1,
+                PairStatus::Deemed if i % stride == 0 => {
+                    let ev = np.evidence(i, tree, world);
+                    part.m.delta += ev.gap;
+                    part.delta_sq += ev.gap * ev.gap;
+                    if let Some(v) = view {
+                        let w = v.weight(&ev);
+                        part.m.p += w;
+                        part.p_sq += w * w;
+                    }
+                }
+                _ => {}
+            }
+            if p.resolved_level > 0 {
+                part.m.per_level[p.resolved_level as usize - 1] += 1;
+            }
+            if let Some(f) = fovea {
+                let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
+                if f.contains_px(f.viewer.project(c)) {
+                    part.m.foveal += 1;
+                    part.m.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
+                }
+            }
+        }
+        part
+    };
+    let n = np.pairs.len();
+    let runs: Vec<(usize, usize)> = (0..n.div_ceil(CHUNK).max(1))
+        .map(|k| (k * CHUNK, ((k + 1) * CHUNK).min(n)))
+        .collect();
+    let parts: Vec<Part> = if threads <= 1 || runs.len() == 1 {
+        runs.iter().map(|&(lo, hi)| run(lo, hi)).collect()
+    } else {
+        let mut out = vec![Part::default(); runs.len()];
+        let workers = threads.min(runs.len());
+        std::thread::scope(|s| {
+            let mut slots: Vec<&mut [Part]> = Vec::new();
+            // Worker w takes runs w, w + workers, ...; results land in their run's slot.
+            let mut rest: &mut [Part] = &mut out;
+            while !rest.is_empty() {
+                let (one, tail) = rest.split_at_mut(1);
+                slots.push(one);
+                rest = tail;
+            }
+            let mut per_worker: Vec<Vec<(usize, &mut [Part])>> =
+                (0..workers).map(|_| Vec::new()).collect();
+            for (k, slot) in slots.into_iter().enumerate() {
+                per_worker[k % workers].push((k, slot));
+            }
+            let run = &run;
+            let runs = &runs;
+            let mut it = per_worker.into_iter();
+            let first = it.next();
+            for jobs in it {
+                s.spawn(move || {
+                    for (k, slot) in jobs {
+                        slot[0] = run(runs[k].0, runs[k].1);
+                    }
+                });
+            }
+            for (k, slot) in first.into_iter().flatten() {
+                slot[0] = run(runs[k].0, runs[k].1);
+            }
+        });
+        out
+    };
+    let mut total = Part::default();
+    for p in &parts {
+        total.add(p);
+    }
+    let mut m = total.m;
+    m.stride = stride as u32;
+    if stride > 1 {
+        let k = stride as f64;
+        m.delta *= k;
+        m.p *= k;
+        let var = (1.0 - 1.0 / k) * k * k;
+        m.delta_se = (var * total.delta_sq).sqrt();
+        m.p_se = (var * total.p_sq).sqrt();
+    }
+    m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::broad_phase::BroadPhase;
+    use crate::config::SceneConfig;
+    use crate::perception::{CameraConfig, Display, PerceptualModel};
+    use crate::shape::Star;
+
+    #[test]
+    fn sampled_sums_estimate_the_exact_ones_within_their_error_for_any_thread_count() {
+        let cfg = SceneConfig::paper(3_000, 4);
+        let world = World::generate(&cfg);
+        let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
+        let mut bp = BroadPhase::new(tree.root_radius(), world.lo, cfg.volume_side(), world.len());
+        let mut np = NarrowPhase::default();
+        np.reset(bp.update(&world.position));
+        np.deem_open();
+        let viewer = Viewer::new(
+            &CameraConfig::default(),
+            &Display::default(),
+            world.lo,
+            cfg.volume_side(),
+        );
+        let view = FrameView {
+            viewer: &viewer,
+            fixation_px: viewer.to_pixels(0.5, 0.5),
+            model: PerceptualModel::default(),
+        };
+        let fovea = Fovea::new(&viewer, view.fixation_px, 5.0);
+        let exact = measure(&np, &tree, &world, Some(&view), Some(&fovea), 1);
+        assert_eq!(exact.stride, 1);
+        assert_eq!(exact.delta_se, 0.0);
+        let n = np.pairs.len() as u32;
+        let limit = n / 10;
+        let sampled = measure_with_limit(&np, &tree, &world, Some(&view), Some(&fovea), 1, limit);
+        assert!(sampled.stride >= 10, "{}", sampled.stride);
+        assert!(
+            (sampled.delta - exact.delta).abs() <= 4.0 * sampled.delta_se && sampled.delta_se > 0.0,
+            "{} vs {} (se {})",
+            sampled.delta,
+            exact.delta,
+            sampled.delta_se
+        );
+        assert!((sampled.p - exact.p).abs() <= 4.0 * sampled.p_se);
+        // Counts are never sampled, and the fovea is counted exactly.
+        assert_eq!(
+            (sampled.foveal, sampled.foveal_deemed),
+            (exact.foveal, exact.foveal)
+        );
+        assert!(exact.foveal > 0 && exact.foveal < n);
+        let two = measure_with_limit(&np, &tree, &world, Some(&view), Some(&fovea), 2, limit);
+        assert_eq!(two, sampled);
+    }
+}
