@@ -415,7 +415,9 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
                         .pairs()
                         .iter()
                         .zip(&weights)
-                        .filter(|(p, _)| p.status == foveal_engine::narrow_phase::PairStatus::Deemed)
+                        .filter(|(p, _)| {
+                            p.status == foveal_engine::narrow_phase::PairStatus::Deemed
+                        })
                         .map(|(_, w)| w)
                         .sum();
                     let cell = &mut cells[ci][bi][si];
@@ -520,7 +522,10 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
             for (bi, b) in cfg.budgets.iter().enumerate() {
                 let p_rr = |r: &RunResult| rr.map_or(f64::NAN, |j| r.cells[ci][bi][j].true_p);
                 let t_rr = |r: &RunResult| rr.map_or(f64::NAN, |j| r.cells[ci][bi][j].tests);
-                let mut push = |label: &str, p: &dyn Fn(&RunResult) -> f64, t: &dyn Fn(&RunResult) -> f64, pm: &dyn Fn(&RunResult) -> f64| {
+                let mut push = |label: &str,
+                                p: &dyn Fn(&RunResult) -> f64,
+                                t: &dyn Fn(&RunResult) -> f64,
+                                pm: &dyn Fn(&RunResult) -> f64| {
                     rows.push(SummaryRow {
                         n,
                         condition: cond.name.clone(),
@@ -544,12 +549,9 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
                         &|r| r.cells[ci][bi][j].prioritise_ms,
                     );
                 }
-                push(
-                    "clairvoyant",
-                    &|r| r.bound[ci][bi],
-                    &|_| f64::NAN,
-                    &|_| f64::NAN,
-                );
+                push("clairvoyant", &|r| r.bound[ci][bi], &|_| f64::NAN, &|_| {
+                    f64::NAN
+                });
             }
         }
     }
@@ -658,7 +660,10 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
                 let _ = write!(s, "| {label} |");
                 for b in &cfg.budgets {
                     let Some(r) = rows.iter().find(|r| {
-                        r.n == n && r.condition == cond.name && r.budget == b.label() && r.scheduler == label
+                        r.n == n
+                            && r.condition == cond.name
+                            && r.budget == b.label()
+                            && r.scheduler == label
                     }) else {
                         s.push_str(" |");
                         continue;
@@ -697,7 +702,12 @@ mod tests {
         for r in &runs {
             for (bi, _) in cfg.budgets.iter().enumerate() {
                 for c in &r.cells[0][bi] {
-                    assert!(c.true_p >= r.bound[0][bi] - 1e-12, "{} < {}", c.true_p, r.bound[0][bi]);
+                    assert!(
+                        c.true_p >= r.bound[0][bi] - 1e-12,
+                        "{} < {}",
+                        c.true_p,
+                        r.bound[0][bi]
+                    );
                     assert!(c.true_p <= r.all_deemed[0] + 1e-12);
                 }
             }

@@ -10,8 +10,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::validate::{ConfigError, check_finite_positive, check_finite_range};
 use crate::math::Vec3;
+use crate::validate::{ConfigError, check_finite_positive, check_finite_range};
 
 /// The physical display the viewer looks at.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

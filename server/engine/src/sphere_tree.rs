@@ -16,9 +16,9 @@ use glam::Vec4;
 use serde::Serialize;
 
 use crate::config::MAX_DEPTH;
-use crate::validate::ConfigError;
 use crate::math::{LVec3, Vec3};
 use crate::shape::Star;
+use crate::validate::ConfigError;
 
 /// Flat, level-ordered sphere tree.
 #[derive(Debug, Clone)]

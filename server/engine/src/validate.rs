@@ -53,4 +53,3 @@ pub(crate) fn check_finite_range(
         ))
     }
 }
-
