@@ -56,11 +56,11 @@ pub fn truths(
     np.reset(candidates);
     let mut stack = Vec::new();
     out.clear();
-    for i in 0..candidates.len() {
+    for (i, &(a, b)) in candidates.iter().enumerate() {
         let before = np.tests;
         let colliding = np.resolve_fully(i, tree, world) == StepOutcome::Hit;
         let cost = (np.tests - before) as u32;
-        let (a, b) = (candidates[i].0 as usize, candidates[i].1 as usize);
+        let (a, b) = (a as usize, b as usize);
         let (sep, gap_ends) = if colliding {
             (0.0, [world.position[a]; 2])
         } else {
