@@ -112,3 +112,44 @@ fn perceptual_schedulers_resolve_pairs_near_the_fixation_first() {
         );
     }
 }
+
+#[test]
+fn the_shipped_table_covers_the_papers_depth() {
+    let cal = crate::schedule::calibration::Calibration::shipped().expect("shipped table");
+    assert_eq!(cal.depth(), 4);
+    assert!(cal.bins().iter().any(|b| b.count > 1000));
+}
+
+/// True P (audit) summed over frames, for a scheduler at a sphere-test budget.
+fn true_p(kind: SchedulerKind, depth: u32, frames: usize) -> f64 {
+    let mut cfg = SimConfig::default();
+    cfg.scene.bodies = 400;
+    cfg.scene.seed = 21;
+    cfg.scene.depth = depth;
+    cfg.scheduler = kind;
+    cfg.budget = BudgetSpec::FractionOfExact(0.05);
+    cfg.calibration_frames = 5;
+    cfg.audit = true;
+    let mut s = Simulation::new(cfg).expect("valid");
+    (0..frames)
+        .map(|_| {
+            let r = s.step(Some(Fixation::at(0.45, 0.55)), &FrozenClock);
+            r.audit
+                .and_then(|a| a.perceived_inaccuracy)
+                .expect("audit with a fixation")
+        })
+        .sum()
+}
+
+#[test]
+fn priced_lowers_true_perceived_error_at_the_shipped_and_a_self_calibrated_depth() {
+    for depth in [4, 3] {
+        let rr = true_p(SchedulerKind::RoundRobin, depth, 8);
+        let priced = true_p(SchedulerKind::Priced, depth, 8);
+        assert!(rr > 0.0, "the budget must bind at depth {depth}");
+        assert!(
+            priced < 0.7 * rr,
+            "depth {depth}: priced true P {priced} vs round-robin {rr}"
+        );
+    }
+}
