@@ -30,11 +30,12 @@ use sap::SweepAndPrune;
 /// [`BroadPhaseKind::Auto`] uses the grid from this many bodies on, sweep and prune below.
 ///
 /// Measured with criterion on the paper scene, one thread (`broad_phase` group of
-/// `benches/step.rs`; one update per frame of motion): sweep and prune takes 36 / 49 / 137 / 128 ns
-/// per body at N = 1,000 / 3,000 / 10,000 / 30,000 and the grid 64 / 55 / 81 / 80, so the grid wins
-/// from a few thousand bodies on. Sweep and prune is nevertheless kept for every N up to 10,000, the
-/// largest scene of the paper's study: its pair order is what the schedulers see at that scale, and
-/// the golden determinism hash pins it.
+/// `benches/step.rs`, one update per frame of motion; a shared 2-core machine, medians): sweep and
+/// prune takes 36 / 31 / 117 / 142 ns per body at N = 1,000 / 3,000 / 10,000 / 30,000 and the grid
+/// 60 / 59 / 82 / 92, so the grid wins from somewhere between 3,000 and 10,000 bodies (and by 2.5x
+/// at a million). Sweep and prune is nevertheless kept for every N up to 10,000, the largest scene
+/// of the paper's study: its pair order is what the schedulers see at that scale, and the golden
+/// determinism hash pins it.
 pub const AUTO_GRID_MIN_BODIES: usize = 10_001;
 
 /// The pair buffer is shrunk once it has been more than 4x larger than needed (plus
