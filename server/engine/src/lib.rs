@@ -12,7 +12,8 @@
 //! - [`validate`]: the field-naming [`ConfigError`] and range checks every config type uses.
 //! - [`shape`], [`sphere_tree`]: the star shape and its flat, level-ordered octree sphere tree.
 //! - [`world`]: body state and integration (walls reflect).
-//! - [`broad_phase`]: sweep and prune with temporal coherence.
+//! - [`broad_phase`]: sweep and prune with temporal coherence at the paper's N, a uniform grid
+//!   beyond; chosen by the scene.
 //! - [`narrow_phase`]: per-pair traversal state, one level of one tree per step.
 //! - [`budget`]: wall-clock and sphere-test budgets, the [`Clock`] trait.
 //! - [`schedule`]: round-robin, sequential, sorted, priority-queue and expected-gain schedulers.

@@ -250,6 +250,18 @@ impl Default for PerceptualModel {
 }
 
 impl PerceptualModel {
+    /// The scheduling default: F2 averaged over C log-uniform in [1, 10] degrees, robust to not
+    /// knowing the viewer's C (see `SimConfig::schedule_model`).
+    pub fn scheduling_default() -> Self {
+        Self {
+            function: PerceptualFunction::F2Range {
+                c_min: 1.0,
+                c_max: 10.0,
+            },
+            unit: EccentricityUnit::Degrees,
+        }
+    }
+
     /// The paper's F1 in pixels.
     pub fn f1_pixels() -> Self {
         Self {
