@@ -113,6 +113,20 @@ impl<'c> Meter<'c> {
         }
     }
 
+    /// The clock's reading now (for work that times itself against the budget it spends).
+    #[inline]
+    pub fn now_ns(&self) -> u64 {
+        self.clock.now_ns()
+    }
+
+    /// Nanoseconds left before a wall-clock deadline (None for other budgets).
+    pub fn wall_left_ns(&self) -> Option<u64> {
+        match self.budget {
+            FrameBudget::Deadline(t) => Some(t.saturating_sub(self.clock.now_ns())),
+            _ => None,
+        }
+    }
+
     /// Whether the budget ran out during the frame.
     pub fn was_exhausted(&self) -> bool {
         self.exhausted

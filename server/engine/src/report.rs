@@ -93,6 +93,9 @@ pub struct FrameReport {
     pub foveal_deemed: u32,
     /// The budget ran out before every pair was resolved.
     pub budget_exhausted: bool,
+    /// The wall-clock budget could not pay for ordering the pairs by gaze: this frame was
+    /// scheduled gaze-blind round-robin instead.
+    pub ordering_shed: bool,
     /// Per-phase timings.
     pub profile: PhaseProfile,
     /// Exact answer for the deemed pairs, when auditing.

@@ -48,6 +48,11 @@ pub trait Scheduler: std::fmt::Debug + Send {
     fn kind(&self) -> SchedulerKind;
     /// Step open pairs until none is left or `meter` says stop.
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>);
+    /// Clock time the last run spent ordering work before its first step (ns; 0 if it does not
+    /// measure it), so the caller can tell whether a wall-clock budget can pay for the ordering.
+    fn ordering_ns(&self) -> u64 {
+        0
+    }
 }
 
 /// The scheduler for `kind` (`options` configure [`Priced`] only).

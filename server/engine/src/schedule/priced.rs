@@ -168,6 +168,8 @@ pub struct Priced {
     dist: Vec<u8>,
     /// Per calibration bin: value per unit weight (gain over price, by the switches).
     ratio: Vec<f32>,
+    /// Clock time of the last run's pricing pass.
+    ordering_ns: u64,
 }
 
 impl Priced {
@@ -196,9 +198,14 @@ impl Scheduler for Priced {
         SchedulerKind::Priced
     }
 
+    fn ordering_ns(&self) -> u64 {
+        self.ordering_ns
+    }
+
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
         let pr = work.priorities;
         let cal = work.calibration;
+        let started = meter.now_ns();
         self.queue.clear();
         self.weight.clear();
         self.dist.clear();
@@ -235,6 +242,7 @@ impl Scheduler for Priced {
             let k = cal.index_of(np, i, bucket);
             self.queue.push(w * self.ratio[k], i as u32);
         }
+        self.ordering_ns = meter.now_ns().saturating_sub(started);
         while let Some(pair) = self.queue.pop() {
             let i = pair as usize;
             // Work on the pair while it stays within COMMIT_BUCKETS of the best other one: a
