@@ -154,9 +154,11 @@ impl Collider {
         let n = self.narrow.pairs.len();
         // Under a wall-clock budget too small to pay for ordering the pairs, ordering them would
         // leave less time for the tests than it is worth: shed it, run round-robin, and say so.
-        let affordable = match (meter.wall_left_ns(), self.ordering_ns_per_pair) {
-            (Some(left), Some(per_pair)) => per_pair * n as f64 <= ORDERING_SHARE * left as f64,
-            _ => true,
+        let affordable = match self.ordering_ns_per_pair {
+            Some(per_pair) => meter
+                .wall_left_ns()
+                .is_none_or(|left| per_pair * n as f64 <= ORDERING_SHARE * left as f64),
+            None => true,
         };
         let prioritised = affordable && self.prioritises(fixation_px.is_some());
         r.ordering_shed = !affordable;
@@ -187,7 +189,7 @@ impl Collider {
         };
         if affordable {
             self.scheduler.run(&mut self.narrow, &work, &mut meter);
-            if meter.wall_left_ns().is_some() && n > 0 {
+            if matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_)) && n > 0 {
                 let cost = (t1 - t0 + self.scheduler.ordering_ns()) as f64 / n as f64;
                 self.ordering_ns_per_pair = Some(match self.ordering_ns_per_pair {
                     Some(old) => 0.8 * old + 0.2 * cost,
