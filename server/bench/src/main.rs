@@ -337,10 +337,10 @@ struct ScaleArgs {
     /// Thread counts, comma separated.
     #[arg(long, value_delimiter = ',', default_value = "1,2")]
     threads: Vec<u32>,
-    /// Measured frames per run (default 600 / 200 / 30 at 10k / 100k / 1M).
+    /// Measured frames per run (default 600 / 200 / 20 at 10k / 100k / 1M).
     #[arg(long)]
     frames: Option<u32>,
-    /// Uncounted warm-up frames per run (default 60 / 30 / 15 at 10k / 100k / 1M).
+    /// Uncounted warm-up frames per run (default 60, one second of simulated time).
     #[arg(long)]
     warmup: Option<u32>,
     /// Frame budget in ms: one value for every N, or one per N (default 4 / 16 / 50 at
