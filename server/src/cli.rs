@@ -62,7 +62,11 @@ pub struct Cli {
     /// `f3:<c1>,<c2>,<c3>,<e1>,<e2>[:unit]`, unit `deg` (default) or `px`.
     /// The default averages F2 over C in [1, 10] degrees: never worse than gaze-blind round-robin
     /// whichever C the viewer has (docs/BENCHMARKS.md).
-    #[arg(long, env = "FOVEAL_SCHEDULE_MODEL", default_value = "f2range:1,10:deg")]
+    #[arg(
+        long,
+        env = "FOVEAL_SCHEDULE_MODEL",
+        default_value = "f2range:1,10:deg"
+    )]
     pub schedule_model: ModelArg,
     /// Model the perceived inaccuracy P is measured with (same syntax as --schedule-model).
     #[arg(long, env = "FOVEAL_MEASURE_MODEL", default_value = "f2:5:deg")]
