@@ -19,8 +19,9 @@ use crate::perception::Viewer;
 use crate::sphere_tree::SphereTree;
 use crate::world::World;
 
-/// Most deemed pairs whose evidence is summed exactly; beyond, a sample of about this many.
-pub const EXACT_LIMIT: u32 = 100_000;
+/// Most deemed pairs whose evidence is summed exactly; beyond, a sample of about this many. A
+/// pair's P costs two visual angles (about 150 ns), so this bounds the sum at a few milliseconds.
+pub const EXACT_LIMIT: u32 = 25_000;
 /// Pairs per run of the chunked sums.
 pub const CHUNK: usize = 32_768;
 
@@ -69,46 +70,52 @@ impl Part {
     }
 }
 
-/// A fovea test: whether a world point is within a visual angle of the fixation, exact in f64
-/// but skipping the angle for points clearly outside by their pixel distance.
+/// A fovea test: whether a screen point is within a visual angle of the fixation, exact in f64:
+/// the angle between the unit eye rays of the two points is within the threshold iff their chord
+/// is within the threshold's chord, 2 sin(threshold / 2), which costs a square root and no
+/// trigonometry.
 #[derive(Debug, Clone, Copy)]
 pub struct Fovea<'a> {
     viewer: &'a Viewer,
-    fixation_px: [f64; 2],
-    /// Degrees of the threshold.
-    threshold_deg: f64,
-    /// Pixel radius beyond which no point can be within the threshold.
-    max_px: f64,
+    fixation_ray: [f64; 3],
+    threshold_chord: f64,
 }
 
 impl<'a> Fovea<'a> {
     /// Points within `threshold_deg` of `fixation_px`.
     pub fn new(viewer: &'a Viewer, fixation_px: [f64; 2], threshold_deg: f64) -> Self {
-        let d = &viewer.display;
-        // A pixel subtends the least angle at the screen's farthest corner from the eye's axis:
-        // pitch * cos^2(theta) / distance radians, theta the corner's angle off the axis.
-        let half_diag =
-            0.5 * f64::from(d.width_px).hypot(f64::from(d.height_px)) * d.pixel_pitch_cm();
-        let cos = d.viewing_distance_cm / half_diag.hypot(d.viewing_distance_cm);
-        let min_deg_per_px = (d.pixel_pitch_cm() * cos * cos / d.viewing_distance_cm).to_degrees();
-        // Off screen the angle per pixel keeps falling; a generous factor covers the margin a
-        // fixation or a body may have beyond the edge.
-        let max_px = 4.0 * threshold_deg / min_deg_per_px.max(1e-12);
         Self {
             viewer,
-            fixation_px,
-            threshold_deg,
-            max_px,
+            fixation_ray: eye_ray(viewer, fixation_px),
+            threshold_chord: 2.0 * (0.5 * threshold_deg.clamp(0.0, 180.0)).to_radians().sin(),
         }
     }
 
     /// Whether the screen point `px` is within the threshold.
     #[inline]
     pub fn contains_px(&self, px: [f64; 2]) -> bool {
-        let (dx, dy) = (px[0] - self.fixation_px[0], px[1] - self.fixation_px[1]);
-        dx * dx + dy * dy <= self.max_px * self.max_px
-            && self.viewer.display.visual_angle_deg(px, self.fixation_px) <= self.threshold_deg
+        let r = eye_ray(self.viewer, px);
+        let d = [
+            r[0] - self.fixation_ray[0],
+            r[1] - self.fixation_ray[1],
+            r[2] - self.fixation_ray[2],
+        ];
+        (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() <= self.threshold_chord
     }
+}
+
+/// Unit ray from the eye (in front of the screen centre) to screen point `px`.
+#[inline]
+fn eye_ray(viewer: &Viewer, px: [f64; 2]) -> [f64; 3] {
+    let d = &viewer.display;
+    let pitch = d.pixel_pitch_cm();
+    let v = [
+        (px[0] - 0.5 * f64::from(d.width_px)) * pitch,
+        (px[1] - 0.5 * f64::from(d.height_px)) * pitch,
+        d.viewing_distance_cm,
+    ];
+    let inv = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    [v[0] * inv, v[1] * inv, v[2] * inv]
 }
 
 /// Sum the metrics of `np`'s pairs on up to `threads` threads. `view` measures P (None: P is 0);
