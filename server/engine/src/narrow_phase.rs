@@ -21,6 +21,9 @@ use crate::world::World;
 /// costs tens of microseconds to start, which 20,000 pairs (about a millisecond of tests) repay.
 pub const PARALLEL_MIN_PAIRS: usize = 20_000;
 
+/// Arena entries always kept between frames (16 KiB): small scenes never reallocate.
+const ARENA_KEEP: usize = 4096;
+
 /// Marker for "no sphere pair tested yet".
 const NONE: u16 = u16::MAX;
 
@@ -227,6 +230,12 @@ impl NarrowPhase {
         self.pairs.clear();
         self.pairs
             .extend(candidates.iter().map(|&(a, b)| PairState::new(a, b)));
+        // A pathological frame (the first one of a random scene: deep overlaps everywhere) can
+        // grow the arena to gigabytes; give back what the last frame did not need.
+        let used = self.arena.len().max(ARENA_KEEP);
+        if self.arena.capacity() > 4 * used {
+            self.arena.shrink_to(2 * used);
+        }
         if self.frames.len() < self.pairs.len() {
             self.frames.resize(
                 self.pairs.len(),
@@ -299,6 +308,11 @@ impl NarrowPhase {
             for i in 0..n {
                 if self.pairs[i].status.is_open() {
                     self.resolve_fully(i, tree, world);
+                    // A resolved pair keeps no list; on a fresh frame no other pair has one, so
+                    // the arena holds one pair's descent at a time, not the frame's.
+                    if fresh {
+                        self.arena.clear();
+                    }
                 }
             }
             return;
@@ -324,10 +338,10 @@ impl NarrowPhase {
             for i in 0..lane.pairs.len() {
                 if lane.pairs[i].status.is_open() {
                     while lane.step(i, tree, world) == StepOutcome::Active {}
+                    // Resolved pairs keep no list: one pair's descent at a time.
+                    lane.arena.clear();
                 }
             }
-            // Resolved pairs keep no list: the scratch is free for the next frame.
-            lane.arena.clear();
         };
         std::thread::scope(|s| {
             let mut it = lanes.iter_mut();
