@@ -86,7 +86,7 @@ impl<'a> Fovea<'a> {
     pub fn new(viewer: &'a Viewer, fixation_px: [f64; 2], threshold_deg: f64) -> Self {
         Self {
             viewer,
-            fixation_ray: eye_ray(viewer, fixation_px),
+            fixation_ray: viewer.display.eye_ray(fixation_px),
             threshold_chord: 2.0 * (0.5 * threshold_deg.clamp(0.0, 180.0)).to_radians().sin(),
         }
     }
@@ -94,7 +94,7 @@ impl<'a> Fovea<'a> {
     /// Whether the screen point `px` is within the threshold.
     #[inline]
     pub fn contains_px(&self, px: [f64; 2]) -> bool {
-        let r = eye_ray(self.viewer, px);
+        let r = self.viewer.display.eye_ray(px);
         let d = [
             r[0] - self.fixation_ray[0],
             r[1] - self.fixation_ray[1],
@@ -102,20 +102,6 @@ impl<'a> Fovea<'a> {
         ];
         (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() <= self.threshold_chord
     }
-}
-
-/// Unit ray from the eye (in front of the screen centre) to screen point `px`.
-#[inline]
-fn eye_ray(viewer: &Viewer, px: [f64; 2]) -> [f64; 3] {
-    let d = &viewer.display;
-    let pitch = d.pixel_pitch_cm();
-    let v = [
-        (px[0] - 0.5 * f64::from(d.width_px)) * pitch,
-        (px[1] - 0.5 * f64::from(d.height_px)) * pitch,
-        d.viewing_distance_cm,
-    ];
-    let inv = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    [v[0] * inv, v[1] * inv, v[2] * inv]
 }
 
 /// Sum the metrics of `np`'s pairs on up to `threads` threads. `view` measures P (None: P is 0);
@@ -184,37 +170,30 @@ fn measure_with_limit(
     let parts: Vec<Part> = if threads <= 1 || runs.len() == 1 {
         runs.iter().map(|&(lo, hi)| run(lo, hi)).collect()
     } else {
-        let mut out = vec![Part::default(); runs.len()];
+        // Worker w sums runs w, w + workers, ...; each result goes back to its run's slot.
         let workers = threads.min(runs.len());
-        std::thread::scope(|s| {
-            let mut slots: Vec<&mut [Part]> = Vec::new();
-            // Worker w takes runs w, w + workers, ...; results land in their run's slot.
-            let mut rest: &mut [Part] = &mut out;
-            while !rest.is_empty() {
-                let (one, tail) = rest.split_at_mut(1);
-                slots.push(one);
-                rest = tail;
+        let (run, runs) = (&run, &runs);
+        let share = move |w: usize| -> Vec<(usize, Part)> {
+            (w..runs.len())
+                .step_by(workers)
+                .map(|k| (k, run(runs[k].0, runs[k].1)))
+                .collect()
+        };
+        let done = std::thread::scope(|s| {
+            let handles: Vec<_> = (1..workers).map(|w| s.spawn(move || share(w))).collect();
+            let mut done = share(0);
+            for h in handles {
+                match h.join() {
+                    Ok(v) => done.extend(v),
+                    Err(panic) => std::panic::resume_unwind(panic),
+                }
             }
-            let mut per_worker: Vec<Vec<(usize, &mut [Part])>> =
-                (0..workers).map(|_| Vec::new()).collect();
-            for (k, slot) in slots.into_iter().enumerate() {
-                per_worker[k % workers].push((k, slot));
-            }
-            let run = &run;
-            let runs = &runs;
-            let mut it = per_worker.into_iter();
-            let first = it.next();
-            for jobs in it {
-                s.spawn(move || {
-                    for (k, slot) in jobs {
-                        slot[0] = run(runs[k].0, runs[k].1);
-                    }
-                });
-            }
-            for (k, slot) in first.into_iter().flatten() {
-                slot[0] = run(runs[k].0, runs[k].1);
-            }
+            done
         });
+        let mut out = vec![Part::default(); runs.len()];
+        for (k, p) in done {
+            out[k] = p;
+        }
         out
     };
     let mut total = Part::default();

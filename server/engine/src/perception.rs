@@ -70,6 +70,21 @@ impl Display {
         self.diagonal_in * 2.54 / f64::from(self.width_px).hypot(f64::from(self.height_px))
     }
 
+    /// Unit ray from the eye (in front of the screen centre) to a screen point given in pixels.
+    /// The angle between two points is the angle between their rays; comparing the chord of two
+    /// rays with 2 sin(threshold / 2) tests an angle against a threshold with no trigonometry.
+    #[inline]
+    pub fn eye_ray(&self, px: [f64; 2]) -> [f64; 3] {
+        let pitch = self.pixel_pitch_cm();
+        let v = [
+            (px[0] - 0.5 * f64::from(self.width_px)) * pitch,
+            (px[1] - 0.5 * f64::from(self.height_px)) * pitch,
+            self.viewing_distance_cm,
+        ];
+        let inv = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        [v[0] * inv, v[1] * inv, v[2] * inv]
+    }
+
     /// Visual angle (degrees) between two screen points given in pixels.
     pub fn visual_angle_deg(&self, a: [f64; 2], b: [f64; 2]) -> f64 {
         let pitch = self.pixel_pitch_cm();

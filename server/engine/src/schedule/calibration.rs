@@ -213,14 +213,6 @@ impl Calibration {
         &self.bins
     }
 
-    /// The calibrated values for pair `i` of `np`, whose centre distance over the root diameter is
-    /// `dist`.
-    #[inline]
-    pub fn lookup(&self, np: &NarrowPhase, i: usize, dist: f32) -> &Bin {
-        let stage = np.pairs[i].stage().min(stages(self.depth) as u8 - 1);
-        &self.bins[index(stage, list_key(np, i), dist)]
-    }
-
     /// Bin index for pair `i` of `np` in distance bucket `bucket` ([`dist_bucket`]).
     #[inline]
     pub fn index_of(&self, np: &NarrowPhase, i: usize, bucket: u8) -> usize {

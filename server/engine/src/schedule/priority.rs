@@ -182,19 +182,6 @@ impl Prioritiser {
         }
     }
 
-    /// The unit eye ray of a screen point, in f64: the first-queue test compares it against the
-    /// threshold, and pairs that sit on the threshold must fall on the side the angle says.
-    #[inline]
-    fn ray64(&self, px: [f64; 2]) -> [f64; 3] {
-        let v = [
-            (px[0] - self.centre[0]) * self.pitch,
-            (px[1] - self.centre[1]) * self.pitch,
-            self.distance,
-        ];
-        let inv = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        [v[0] * inv, v[1] * inv, v[2] * inv]
-    }
-
     /// Screen position, eye ray and scale of a world point: one division and one square root.
     #[inline]
     fn body_view(&self, p: Vec3) -> BodyView {
@@ -256,7 +243,7 @@ impl Prioritiser {
         }
         let fix = fixation_px.map(|f| {
             let px = [f[0] as f32, f[1] as f32];
-            let r = self.ray64(f);
+            let r = viewer.display.eye_ray(f);
             let view = BodyView {
                 px,
                 ray: [r[0] as f32, r[1] as f32, r[2] as f32],
@@ -338,7 +325,7 @@ impl Prioritiser {
                 }
                 if self.needs.inner {
                     let c = viewer.project((pa + pb) * 0.5);
-                    inner[k] = chord64(self.ray64(c), *f_ray) <= self.threshold_chord;
+                    inner[k] = chord64(viewer.display.eye_ray(c), *f_ray) <= self.threshold_chord;
                 }
             } else {
                 falloff[k] = 1.0;
