@@ -451,10 +451,9 @@ impl Lane<'_> {
         if p.status == PairStatus::Untested {
             let (a, b) = (p.a as usize, p.b as usize);
             let root = tree.sphere(0);
-            let t = PairFrame::translation(world, a, b);
             let mut framed = false;
             if let Some(w) = self.witness.get(a).filter(|w| w.partner == p.b) {
-                let frame = PairFrame::with_translation(world, a, b, t);
+                let frame = PairFrame::new(world, a, b);
                 self.frames[i] = frame;
                 framed = true;
                 let (la, lb) = (
@@ -472,12 +471,16 @@ impl Lane<'_> {
                 self.tests += 1;
             }
             let st = &mut self.pairs[i];
-            // The root is centred on its body: B's root centre in A's frame is `t` itself.
-            if !spheres_overlap(root, t, root.w) {
+            // The root is centred on its body, so the root test needs the centre distance alone:
+            // no rotation into A's frame (whose length it would only round), and no frame for the
+            // pairs it settles, which are most of them.
+            let d = LVec3::from((world.position[b] - world.position[a]).as_vec3());
+            let reach = root.w + root.w;
+            if d.length_squared() > reach * reach {
                 return resolve(st, PairStatus::Separate, 1);
             }
             if !framed {
-                self.frames[i] = PairFrame::with_translation(world, a, b, t);
+                self.frames[i] = PairFrame::new(world, a, b);
             }
             st.last = [0, 0];
             st.levels = [1, 1];
