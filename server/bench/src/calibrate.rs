@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 use foveal_engine::SceneConfig;
 use foveal_engine::schedule::calibration::{Calibration, Observations, ReliabilityRow};
 
-use crate::BenchError;
+use crate::error::BenchError;
 
 /// Runs of the calibration: (N, frames) with warm-up.
 #[derive(Debug, Clone)]

@@ -14,8 +14,10 @@
 //! - [`gaze`]: the seeded fixation/saccade script and the recorded-trace reader.
 //! - [`runner`]: the `Instant` clock, one run, the plan, per-frame CSV records.
 //! - [`stats`]: per-run mean/sd, mean and 95% CI across seeds.
+//! - [`error`]: [`BenchError`], what can stop a bench command.
 //! - [`report`]: grouping, paired ratios, summary CSVs and markdown tables.
-//! - [`plots`]: SVG and PNG figures.
+//! - [`figures`]: the study's figures from the grouped runs.
+//! - [`plots`]: SVG and PNG rendering.
 //!
 //! # Output directory
 //! ```text
@@ -29,6 +31,8 @@
 //! The two parts write separate files, so they can be run separately into one directory.
 
 pub mod calibrate;
+pub mod error;
+pub mod figures;
 pub mod gaze;
 pub mod open_loop;
 pub mod plots;
@@ -40,55 +44,16 @@ pub mod stats;
 pub mod stress;
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
-use foveal_engine::{ConfigError, SchedulerKind};
-
+pub use error::BenchError;
 pub use gaze::{GazeError, RecordedGaze, ScriptedGaze};
 pub use protocol::{CurvesConfig, GazeSpec, Mode, Part, RunSpec, StudyConfig};
 pub use runner::{InstantClock, RunSummary};
 
-use plots::{Figure, Panel, Series};
-use report::{Group, Metric, find, groups};
-
-/// Everything that can stop a study.
-#[derive(Debug, thiserror::Error)]
-pub enum BenchError {
-    /// The engine refused a configuration.
-    #[error(transparent)]
-    Config(#[from] ConfigError),
-    /// The gaze trace could not be used.
-    #[error(transparent)]
-    Gaze(#[from] GazeError),
-    /// A file could not be written.
-    #[error("{path}: {source}")]
-    Io {
-        /// The file.
-        path: PathBuf,
-        /// The cause.
-        source: std::io::Error,
-    },
-    /// A figure could not be drawn.
-    #[error("figure {path}: {msg}")]
-    Plot {
-        /// The file.
-        path: PathBuf,
-        /// What plotters said.
-        msg: String,
-    },
-    /// The study configuration is unusable.
-    #[error("invalid study: {0}")]
-    Invalid(String),
-}
-
-impl BenchError {
-    pub(crate) fn io(path: &Path, source: std::io::Error) -> Self {
-        Self::Io {
-            path: path.to_owned(),
-            source,
-        }
-    }
-}
+use figures::{curve_figures, table_figures};
+use plots::Figure;
+use report::groups;
 
 /// What a study wrote.
 #[derive(Debug, Clone, Default)]
@@ -101,6 +66,8 @@ pub struct StudyOutput {
     pub figures_with_text: bool,
     /// Wall time of the whole study (s).
     pub wall_s: f64,
+    /// The open-loop report (markdown, with the `clairvoyant` rows), if that part ran.
+    pub open_loop_report: Option<String>,
 }
 
 impl StudyConfig {
@@ -121,8 +88,8 @@ impl StudyConfig {
         {
             return bad("the curves part needs at least one N, one frame and one fraction");
         }
-        if !self.table && self.curves.is_none() {
-            return bad("nothing to run: neither the table nor the curves part");
+        if !self.table && self.curves.is_none() && self.open_loop.is_none() {
+            return bad("nothing to run: neither the table, the curves nor the open-loop part");
         }
         let fractions = self
             .fractions
@@ -142,264 +109,6 @@ impl StudyConfig {
         }
         Ok(())
     }
-}
-
-fn rr_series(gs: &[Group<'_>], ns: &[u32], mode: Mode, m: Metric, name: String) -> Series {
-    scheduler_series(gs, ns, mode, SchedulerKind::RoundRobin, m, name)
-}
-
-fn scheduler_series(
-    gs: &[Group<'_>],
-    ns: &[u32],
-    mode: Mode,
-    k: SchedulerKind,
-    m: Metric,
-    name: String,
-) -> Series {
-    Series {
-        name,
-        points: ns
-            .iter()
-            .filter_map(|&n| find(gs, Part::Table, n, mode, k).map(|g| (f64::from(n), g.ci(m))))
-            .collect(),
-    }
-}
-
-/// Mode of the table with the wall-clock budget, if any N has one.
-fn ms_modes(cfg: &StudyConfig) -> Vec<(u32, Mode)> {
-    cfg.ns
-        .iter()
-        .filter_map(|&n| {
-            cfg.table_modes(n)
-                .into_iter()
-                .find(Mode::is_wall_clock)
-                .map(|m| (n, m))
-        })
-        .collect()
-}
-
-/// Series over N for the paper-ms mode, whose parameter differs by N.
-fn ms_series(
-    cfg: &StudyConfig,
-    gs: &[Group<'_>],
-    k: SchedulerKind,
-    m: Metric,
-    name: &str,
-) -> Series {
-    Series {
-        name: name.into(),
-        points: ms_modes(cfg)
-            .into_iter()
-            .filter_map(|(n, mode)| {
-                find(gs, Part::Table, n, mode, k).map(|g| (f64::from(n), g.ci(m)))
-            })
-            .collect(),
-    }
-}
-
-/// Figures 4, 5 and 6 of the paper from the table part.
-pub fn table_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure)> {
-    let ns = &cfg.ns;
-    let t_mean: Metric = |r| r.t_ms.mean();
-    let t_sd: Metric = |r| r.t_ms.sd();
-    let rr = SchedulerKind::RoundRobin;
-    let mut modes: Vec<(Mode, String)> = vec![
-        (Mode::Exact, "exact".into()),
-        (Mode::Zero, "interrupt at 0".into()),
-    ];
-    modes.extend(
-        cfg.fractions
-            .iter()
-            .map(|&f| (Mode::Fraction(f), format!("{f} of exact cost"))),
-    );
-    modes.extend(
-        cfg.tests_budgets
-            .iter()
-            .map(|&t| (Mode::Tests(t), format!("{t} sphere tests"))),
-    );
-    let has_ms = !ms_modes(cfg).is_empty();
-    let ms_name = format!(
-        "paper target / {}",
-        cfg.paper_ms_scale
-            .map(|k| k.to_string())
-            .unwrap_or_default()
-    );
-    let time_panel = |title: &str, y: &str, m: Metric| {
-        let mut series: Vec<Series> = modes
-            .iter()
-            .map(|(mode, name)| rr_series(gs, ns, *mode, m, name.clone()))
-            .collect();
-        if has_ms {
-            series.push(ms_series(cfg, gs, rr, m, &ms_name));
-        }
-        Panel {
-            title: title.into(),
-            x_label: "bodies N".into(),
-            y_label: y.into(),
-            log_x: true,
-            log_y: true,
-            series,
-        }
-    };
-    let fig4 = Figure {
-        panels: vec![
-            time_panel("Mean collision time T (round-robin)", "mean T (ms)", t_mean),
-            time_panel("Standard deviation of T", "sd T (ms)", t_sd),
-        ],
-    };
-    let inacc_panel = |title: &str, y: &str, est: Metric, truth: Metric| {
-        let mut series = Vec::new();
-        for (mode, name) in modes.iter().filter(|(m, _)| *m != Mode::Exact) {
-            series.push(rr_series(gs, ns, *mode, est, format!("{name}, estimate")));
-            series.push(rr_series(gs, ns, *mode, truth, format!("{name}, true")));
-        }
-        if has_ms {
-            series.push(ms_series(cfg, gs, rr, est, &format!("{ms_name}, estimate")));
-            series.push(ms_series(cfg, gs, rr, truth, &format!("{ms_name}, true")));
-        }
-        Panel {
-            title: title.into(),
-            x_label: "bodies N".into(),
-            y_label: y.into(),
-            log_x: true,
-            log_y: true,
-            series,
-        }
-    };
-    let fig5 = Figure {
-        panels: vec![
-            inacc_panel(
-                "Geometric inaccuracy Δ (round-robin)",
-                "mean Δ per frame",
-                |r| r.delta.mean(),
-                |r| r.true_delta.mean(),
-            ),
-            inacc_panel(
-                "Perceived inaccuracy P (round-robin)",
-                "mean P per frame",
-                |r| r.p.mean(),
-                |r| r.true_p.mean(),
-            ),
-        ],
-    };
-    let mut out = vec![
-        ("fig4_time".to_string(), fig4),
-        ("fig5_inaccuracy".to_string(), fig5),
-    ];
-    for &f in &cfg.fractions {
-        let mode = Mode::Fraction(f);
-        let sched_panel = |title: String, y: &str, m: Metric| Panel {
-            title,
-            x_label: "bodies N".into(),
-            y_label: y.into(),
-            log_x: true,
-            log_y: true,
-            series: cfg
-                .schedulers
-                .iter()
-                .map(|&k| scheduler_series(gs, ns, mode, k, m, k.name().into()))
-                .collect(),
-        };
-        out.push((
-            format!("fig6_schedulers_f{f}"),
-            Figure {
-                panels: vec![
-                    sched_panel(
-                        format!("P per scheduler, budget {f} of exact"),
-                        "mean P (estimate)",
-                        |r| r.p.mean(),
-                    ),
-                    sched_panel(
-                        format!("True P per scheduler, budget {f} of exact"),
-                        "mean true P (audit)",
-                        |r| r.true_p.mean(),
-                    ),
-                ],
-            },
-        ));
-    }
-    if has_ms {
-        let panel = |title: String, y: &str, m: Metric| Panel {
-            title,
-            x_label: "bodies N".into(),
-            y_label: y.into(),
-            log_x: true,
-            log_y: true,
-            series: cfg
-                .schedulers
-                .iter()
-                .map(|&k| ms_series(cfg, gs, k, m, k.name()))
-                .collect(),
-        };
-        out.push((
-            "fig6_schedulers_ms".to_string(),
-            Figure {
-                panels: vec![
-                    panel(
-                        format!("P per scheduler, {ms_name} ms"),
-                        "mean P (estimate)",
-                        |r| r.p.mean(),
-                    ),
-                    panel(
-                        format!("True P per scheduler, {ms_name} ms"),
-                        "mean true P (audit)",
-                        |r| r.true_p.mean(),
-                    ),
-                ],
-            },
-        ));
-    }
-    out
-}
-
-/// True P (and estimated P) against budget per scheduler, one figure per N of the curves.
-pub fn curve_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure)> {
-    let Some(c) = &cfg.curves else {
-        return Vec::new();
-    };
-    c.ns.iter()
-        .map(|&n| {
-            let panel = |title: String, y: &str, m: Metric| Panel {
-                title,
-                x_label: "budget (fraction of exact narrow-phase cost)".into(),
-                y_label: y.into(),
-                log_x: true,
-                log_y: true,
-                series: cfg
-                    .schedulers
-                    .iter()
-                    .map(|&k| Series {
-                        name: k.name().into(),
-                        points: c
-                            .fractions
-                            .iter()
-                            .filter_map(|&f| {
-                                find(gs, Part::Curves, n, Mode::Fraction(f), k)
-                                    .map(|g| (f, g.ci(m)))
-                            })
-                            .collect(),
-                    })
-                    .collect(),
-            };
-            (
-                format!("curves_n{n}"),
-                Figure {
-                    panels: vec![
-                        panel(
-                            format!("True P against budget, N = {n}"),
-                            "mean true P (audit)",
-                            |r| r.true_p.mean(),
-                        ),
-                        panel(
-                            format!("Estimated P against budget, N = {n}"),
-                            "mean P (estimate)",
-                            |r| r.p.mean(),
-                        ),
-                    ],
-                },
-            )
-        })
-        .collect()
 }
 
 fn write_part(
@@ -438,7 +147,11 @@ fn write_part(
     }
     let wall: f64 = runs.iter().map(|r| r.wall_s).sum();
     let mut md = format!(
-        "# foveal-bench study: {name} part\n\nProtocol:\n\n{}- runs: {}; wall time of the runs {:.1} s\n\n",
+        "# foveal-bench study: {name} part (closed loop)\n\nEach scheduler runs its own \
+         simulation, whose deemed pairs respond as if they collided, so the runs show what a \
+         viewer sees over time and differ in their physics: compare schedulers in \
+         `open_loop_report.md` (identical frames, with the clairvoyant bound).\n\nProtocol:\n\n\
+         {}- runs: {}; wall time of the runs {:.1} s\n\n",
         report::describe(cfg),
         runs.len(),
         wall
@@ -474,6 +187,16 @@ pub fn run_study(cfg: &StudyConfig) -> Result<StudyOutput, BenchError> {
     };
     write_part(cfg, Part::Table, &runs, &mut out)?;
     write_part(cfg, Part::Curves, &runs, &mut out)?;
+    if let Some(ol) = &cfg.open_loop {
+        let ol = open_loop::OpenLoopConfig {
+            out: cfg.out.clone(),
+            jobs: cfg.jobs.max(1),
+            ..ol.clone()
+        };
+        let written = open_loop::run_and_write(&ol)?;
+        out.files.extend(written.files);
+        out.open_loop_report = Some(written.report);
+    }
     out.runs = runs;
     out.wall_s = started.elapsed().as_secs_f64();
     Ok(out)

@@ -82,29 +82,11 @@ fn open_loop(args: &OpenLoopArgs) -> Result<()> {
         cfg.out = o.clone();
     }
     cfg.jobs = args.jobs.max(1);
-    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
-    let started = std::time::Instant::now();
-    let runs = ol::run(&cfg).context("open-loop comparison failed")?;
-    let rows = ol::summarise(&cfg, &runs);
-    let load_end = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
-    let md = format!(
-        "{}\nLoad average at start: {}; at end: {}; wall time {:.0} s.\n",
-        ol::markdown(&cfg, &runs, &rows),
-        load.trim(),
-        load_end.trim(),
-        started.elapsed().as_secs_f64()
-    );
-    std::fs::create_dir_all(&cfg.out).with_context(|| format!("creating {}", cfg.out.display()))?;
-    for (name, text) in [
-        ("open_loop_runs.csv", ol::runs_csv(&cfg, &runs)),
-        ("open_loop_summary.csv", ol::summary_csv(&rows)),
-        ("open_loop_report.md", md.clone()),
-    ] {
-        let path = cfg.out.join(name);
-        std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
-        eprintln!("{}", path.display());
+    let out = ol::run_and_write(&cfg).context("open-loop comparison failed")?;
+    for f in &out.files {
+        eprintln!("{}", f.display());
     }
-    print!("{md}");
+    print!("{}", out.report);
     Ok(())
 }
 
@@ -226,6 +208,9 @@ struct StudyArgs {
     /// Do not write per-frame CSVs.
     #[arg(long)]
     no_frames: bool,
+    /// Skip the open-loop comparison of schedulers (identical frames, clairvoyant bound).
+    #[arg(long)]
+    no_open_loop: bool,
 }
 
 impl StudyArgs {
@@ -243,6 +228,9 @@ impl StudyArgs {
         }
         if let Some(s) = self.seeds {
             c.seeds = (1..=s).collect();
+            if let Some(ol) = c.open_loop.as_mut() {
+                ol.seeds = c.seeds.clone();
+            }
         }
         if let Some(f) = &self.fractions {
             c.fractions = f.clone();
@@ -252,6 +240,9 @@ impl StudyArgs {
         }
         if let Some(t) = &self.tests {
             c.tests_budgets = t.clone();
+        }
+        if self.no_open_loop || self.curves {
+            c.open_loop = None;
         }
         if self.curves || self.with_curves {
             c.curves.get_or_insert_with(CurvesConfig::default);
@@ -316,6 +307,9 @@ fn study(args: &StudyArgs) -> Result<()> {
         cfg.out.display()
     );
     let out = foveal_bench::run_study(&cfg).context("study failed")?;
+    if let Some(report) = &out.open_loop_report {
+        println!("## Schedulers on identical frames (open loop)\n\n{report}");
+    }
     for f in &out.files {
         println!("{}", f.display());
     }

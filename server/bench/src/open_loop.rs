@@ -33,7 +33,7 @@ use foveal_engine::{
     Simulation,
 };
 
-use crate::BenchError;
+use crate::error::BenchError;
 use crate::gaze::ScriptedGaze;
 use crate::runner::InstantClock;
 use crate::stats::MeanCi;
@@ -113,7 +113,7 @@ impl Budget {
 }
 
 /// The comparison to run.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct OpenLoopConfig {
     /// Body counts.
     pub ns: Vec<u32>,
@@ -617,6 +617,48 @@ pub fn summary_csv(rows: &[SummaryRow]) -> String {
         );
     }
     s
+}
+
+/// What [`run_and_write`] produced.
+#[derive(Debug, Clone)]
+pub struct OpenLoopOutput {
+    /// Files written: per-run CSV, summary CSV, report.
+    pub files: Vec<PathBuf>,
+    /// The report (markdown), as written.
+    pub report: String,
+}
+
+/// Run `cfg` and write `open_loop_runs.csv`, `open_loop_summary.csv` and `open_loop_report.md`
+/// under `cfg.out`, the report stamped with the machine's load average before and after.
+pub fn run_and_write(cfg: &OpenLoopConfig) -> Result<OpenLoopOutput, BenchError> {
+    let load = || {
+        std::fs::read_to_string("/proc/loadavg")
+            .map(|s| s.trim().to_string())
+            .unwrap_or_else(|_| "unknown".into())
+    };
+    let load_start = load();
+    let started = std::time::Instant::now();
+    let runs = run(cfg)?;
+    let rows = summarise(cfg, &runs);
+    let report = format!(
+        "{}\nLoad average at start: {}; at end: {}; wall time {:.0} s.\n",
+        markdown(cfg, &runs, &rows),
+        load_start,
+        load(),
+        started.elapsed().as_secs_f64()
+    );
+    std::fs::create_dir_all(&cfg.out).map_err(|e| BenchError::io(&cfg.out, e))?;
+    let mut files = Vec::new();
+    for (name, text) in [
+        ("open_loop_runs.csv", runs_csv(cfg, &runs)),
+        ("open_loop_summary.csv", summary_csv(&rows)),
+        ("open_loop_report.md", report.clone()),
+    ] {
+        let path = cfg.out.join(name);
+        std::fs::write(&path, text).map_err(|e| BenchError::io(&path, e))?;
+        files.push(path);
+    }
+    Ok(OpenLoopOutput { files, report })
 }
 
 /// Markdown tables: per N and condition, one row per scheduler, one column per budget, each cell

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use crate::BenchError;
+use crate::error::BenchError;
 use crate::stats::MeanCi;
 
 /// One line: points (x, mean ± CI).

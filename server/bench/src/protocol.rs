@@ -8,8 +8,15 @@
 //!   fixed sphere-test budgets);
 //! - **curves** (beyond the paper): true perceived inaccuracy against budget, per scheduler, at a few
 //!   N, to see whether the expected-gain scheduler beats the paper's best at equal budget.
+//!
+//! Both parts are *closed loop*: each scheduler simulates its own physics (deemed pairs respond
+//! as if they collided), so they show what a viewer sees over time, not a comparison of
+//! schedulers. Schedulers are compared **open loop** ([`crate::open_loop`], on by default): every
+//! scheduler and budget on the identical frames of one exact run, against the clairvoyant bound.
 
 use std::path::PathBuf;
+
+use crate::open_loop::OpenLoopConfig;
 
 use foveal_engine::{
     BudgetSpec, EccentricityUnit, PerceptualFunction, PerceptualModel, SceneConfig, SchedulerKind,
@@ -194,6 +201,8 @@ pub struct StudyConfig {
     pub tests_budgets: Vec<u64>,
     /// The budget sweep, if requested.
     pub curves: Option<CurvesConfig>,
+    /// The open-loop comparison of schedulers, if run (written into [`Self::out`]).
+    pub open_loop: Option<OpenLoopConfig>,
     /// Gaze source.
     pub gaze: GazeSpec,
     /// Perceptual model used both to schedule and to measure (paper figure 6(b): F2).
@@ -230,6 +239,7 @@ impl Default for StudyConfig {
             paper_ms_scale: Some(100.0),
             tests_budgets: Vec::new(),
             curves: None,
+            open_loop: Some(OpenLoopConfig::standard()),
             gaze: GazeSpec::Scripted,
             model: PerceptualModel::default(),
             threshold_deg: 5.0,
@@ -257,6 +267,7 @@ impl StudyConfig {
                 frames: 30,
                 fractions: vec![0.01, 0.1, 0.5],
             }),
+            open_loop: Some(OpenLoopConfig::quick()),
             calibration_frames: 20,
             warmup_frames: 20,
             jobs: 2,

@@ -13,7 +13,7 @@ use std::time::Instant;
 use foveal_engine::{BudgetSpec, Clock, FrameReport, FrozenClock, SchedulerKind, Simulation};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::BenchError;
+use crate::error::BenchError;
 use crate::gaze::{Gaze, RecordedGaze, ScriptedGaze};
 use crate::protocol::{GazeSpec, Part, RunSpec, StudyConfig};
 use crate::stats::Accum;

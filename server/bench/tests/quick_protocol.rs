@@ -4,6 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
+use foveal_bench::open_loop::{Budget, OpenLoopConfig};
 use foveal_bench::protocol::{CurvesConfig, StudyConfig};
 use foveal_bench::{GazeSpec, run_study};
 use foveal_engine::SchedulerKind;
@@ -26,6 +27,7 @@ fn tiny(out: PathBuf) -> StudyConfig {
             frames: 4,
             fractions: vec![0.05, 0.5],
         }),
+        open_loop: Some(tiny_open_loop()),
         calibration_frames: 3,
         warmup_frames: 2,
         jobs: 2,
@@ -33,6 +35,19 @@ fn tiny(out: PathBuf) -> StudyConfig {
         out,
         ..StudyConfig::default()
     }
+}
+
+/// The open-loop part at N = 150, two seeds of a few frames, two sphere-test budgets.
+fn tiny_open_loop() -> OpenLoopConfig {
+    let mut ol = OpenLoopConfig::quick();
+    ol.ns = vec![150];
+    ol.seeds = vec![1, 2];
+    ol.frames = vec![(150, 4)];
+    ol.warmup = 5;
+    ol.timing_frames = 2;
+    ol.budgets = vec![Budget::Tests(0.05), Budget::Tests(0.3)];
+    ol.conditions.truncate(1);
+    ol
 }
 
 /// Parse a CSV: a header and rows of the same width whose non-empty fields are numbers, except
@@ -130,12 +145,42 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
     assert!(md.contains("T exact / interrupted"), "{md}");
     let md = std::fs::read_to_string(out.join("curves_report.md")).expect("report");
     assert!(md.contains("expected-gain /"), "{md}");
+    assert!(md.contains("closed loop"), "{md}");
+
+    // The open-loop part: every scheduler of the condition and the clairvoyant bound at every
+    // budget, the bound's true P never above a scheduler's.
+    let (h, rows) = parse_csv(
+        &out.join("open_loop_summary.csv"),
+        &["condition", "budget", "scheduler"],
+    );
+    let col = |name: &str| h.iter().position(|c| c == name).expect("column");
+    let (budget, sched, tp) = (col("budget"), col("scheduler"), col("true_p"));
+    for b in ["tests=0.05", "tests=0.3"] {
+        let at: Vec<&Vec<String>> = rows.iter().filter(|r| r[budget] == b).collect();
+        let bound = at
+            .iter()
+            .find(|r| r[sched] == "clairvoyant")
+            .map(|r| r[tp].parse::<f64>().expect("number"))
+            .expect("clairvoyant row");
+        assert!(at.len() > 2, "{b}: {at:?}");
+        for r in &at {
+            let p: f64 = r[tp].parse().expect("number");
+            assert!(
+                bound <= p * (1.0 + 1e-9) + 1e-12,
+                "{b}: bound {bound} above {r:?}"
+            );
+        }
+    }
+    let report = res.open_loop_report.as_deref().expect("open-loop report");
+    assert!(report.contains("| clairvoyant |"), "{report}");
+    assert!(out.join("open_loop_report.md").is_file());
     let _ = std::fs::remove_dir_all(&out);
 }
 
 #[test]
 fn deterministic_budgets_replay_exactly() {
     let mut a = tiny(out_dir("det-a"));
+    a.open_loop = None;
     a.paper_ms_scale = None;
     a.table = false;
     a.frame_csv = false;
@@ -182,6 +227,7 @@ fn recorded_trace_drives_a_study() {
     let mut cfg = tiny(out.clone());
     cfg.gaze = GazeSpec::Csv(trace);
     cfg.curves = None;
+    cfg.open_loop = None;
     cfg.ns = vec![10];
     let res = run_study(&cfg).expect("study runs");
     assert!(res.runs.iter().all(|r| r.p.count() > 0));

@@ -1,0 +1,101 @@
+//! Summaries across seeds and paired ratios; what is written from them lives in [`csv`] (the
+//! machine-readable runs and summaries) and [`markdown`] (the tables and headlines of a report).
+//!
+//! Every mean across seeds carries a 95% confidence interval (Student's t over seeds). Ratios between
+//! two conditions are *paired*: computed per seed (same scene, same gaze), then averaged with a CI.
+
+pub mod csv;
+pub mod markdown;
+
+pub use csv::{write_runs_csv, write_summary_csv};
+pub use markdown::{best_vs_expected_gain, curves_markdown, describe, headlines, table_markdown};
+
+use foveal_engine::SchedulerKind;
+
+use crate::protocol::{Mode, Part};
+use crate::runner::RunSummary;
+use crate::stats::MeanCi;
+
+/// A per-run scalar.
+pub type Metric = fn(&RunSummary) -> f64;
+
+/// The metrics summarised across seeds: (CSV name, accessor).
+pub const METRICS: [(&str, Metric); 12] = [
+    ("t_mean_ms", |r| r.t_ms.mean()),
+    ("t_sd_ms", |r| r.t_ms.sd()),
+    ("narrow_mean_ms", |r| r.narrow_ms.mean()),
+    ("delta", |r| r.delta.mean()),
+    ("p", |r| r.p.mean()),
+    ("true_delta", |r| r.true_delta.mean()),
+    ("true_p", |r| r.true_p.mean()),
+    ("false_positives", |r| r.false_positives.mean()),
+    ("deemed", |r| r.deemed.mean()),
+    ("candidates", |r| r.candidates.mean()),
+    ("sphere_tests", |r| r.tests.mean()),
+    ("exact_cost_tests", |r| r.exact_cost),
+];
+
+/// Runs of one condition (part, N, mode, scheduler) across seeds.
+#[derive(Debug, Clone)]
+pub struct Group<'a> {
+    /// Part.
+    pub part: Part,
+    /// Bodies.
+    pub n: u32,
+    /// Budget.
+    pub mode: Mode,
+    /// Scheduler.
+    pub scheduler: SchedulerKind,
+    /// One run per seed.
+    pub runs: Vec<&'a RunSummary>,
+}
+
+impl Group<'_> {
+    /// Mean and CI of a metric across seeds.
+    pub fn ci(&self, m: Metric) -> MeanCi {
+        MeanCi::of(self.runs.iter().map(|r| m(r)))
+    }
+}
+
+/// Group runs by condition, in order of first appearance.
+pub fn groups(runs: &[RunSummary]) -> Vec<Group<'_>> {
+    let mut out: Vec<Group<'_>> = Vec::new();
+    for r in runs {
+        let s = &r.spec;
+        match out.iter_mut().find(|g| {
+            g.part == s.part && g.n == s.n && g.mode == s.mode && g.scheduler == s.scheduler
+        }) {
+            Some(g) => g.runs.push(r),
+            None => out.push(Group {
+                part: s.part,
+                n: s.n,
+                mode: s.mode,
+                scheduler: s.scheduler,
+                runs: vec![r],
+            }),
+        }
+    }
+    out
+}
+
+/// Find a condition.
+pub fn find<'g, 'a>(
+    gs: &'g [Group<'a>],
+    part: Part,
+    n: u32,
+    mode: Mode,
+    scheduler: SchedulerKind,
+) -> Option<&'g Group<'a>> {
+    gs.iter()
+        .find(|g| g.part == part && g.n == n && g.mode == mode && g.scheduler == scheduler)
+}
+
+/// Paired ratio `m(a) / m(b)` per seed, then mean and CI across seeds.
+pub fn paired_ratio(a: &Group<'_>, b: &Group<'_>, m: Metric) -> MeanCi {
+    MeanCi::of(a.runs.iter().filter_map(|ra| {
+        b.runs
+            .iter()
+            .find(|rb| rb.spec.seed == ra.spec.seed)
+            .map(|rb| m(ra) / m(rb))
+    }))
+}
