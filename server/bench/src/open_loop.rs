@@ -34,7 +34,7 @@ use foveal_engine::{
 };
 
 use crate::error::BenchError;
-use crate::gaze::ScriptedGaze;
+use crate::gaze::{ScriptedGaze, SplitMix64};
 use crate::runner::InstantClock;
 use crate::stats::MeanCi;
 
@@ -69,14 +69,36 @@ impl SchedulerSpec {
     }
 }
 
-/// What the scheduler is told about the gaze.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// What the scheduler is told about the gaze: the viewer's true fixation, or what an imperfect
+/// eye tracker (or none) would report. The measurement always uses the true fixation.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum GazeFeed {
     /// The viewer's fixation (as the measurement uses).
     Viewer,
     /// Always the screen centre: no eye tracker.
     Centre,
+    /// A constant tracker bias: the fixation moved this many degrees of visual angle to the
+    /// right (at the screen centre's pixels per degree).
+    Bias {
+        /// Bias, degrees.
+        deg: f64,
+    },
+    /// Tracker noise: independent Gaussian offsets of this standard deviation per axis and
+    /// frame, degrees (seeded by the run's seed).
+    Noise {
+        /// Standard deviation per axis, degrees.
+        sd_deg: f64,
+    },
+    /// End-to-end latency: the scheduler sees where the viewer looked this long ago.
+    Latency {
+        /// Latency, milliseconds.
+        ms: f64,
+    },
 }
+
+/// Gaze speed above which the viewer is taken to be in a saccade, degrees per second: the usual
+/// velocity threshold of I-VT fixation identification (Salvucci and Goldberg 2000).
+pub const SACCADE_DEG_PER_S: f64 = 30.0;
 
 /// One experimental condition.
 #[derive(Debug, Clone, PartialEq)]
@@ -89,6 +111,10 @@ pub struct Condition {
     pub measure_model: PerceptualModel,
     /// What the schedulers are told about the gaze.
     pub feed: GazeFeed,
+    /// Saccadic suppression: frames during which the viewer's gaze moves faster than
+    /// [`SACCADE_DEG_PER_S`] are not counted (vision is suppressed during saccades). The
+    /// schedulers still run on them, so every condition sees the same sequence of frames.
+    pub suppress_saccades: bool,
     /// Schedulers run in this condition (round-robin is always among them).
     pub schedulers: Vec<SchedulerSpec>,
 }
@@ -199,6 +225,7 @@ impl OpenLoopConfig {
                     schedule_model: f2(c),
                     measure_model: f2(c),
                     feed,
+                    suppress_saccades: false,
                     schedulers: if feed == GazeFeed::Viewer {
                         all.clone()
                     } else {
@@ -226,9 +253,33 @@ impl OpenLoopConfig {
                     schedule_model: s,
                     measure_model: f2(m),
                     feed: GazeFeed::Viewer,
+                    suppress_saccades: false,
                     schedulers: pair.clone(),
                 });
             }
+        }
+        // Gaze robustness (C = 5): what a tracker's bias, noise and latency cost, and what
+        // counting only the frames a viewer can see (saccadic suppression) changes.
+        let robustness = [
+            ("bias 1 deg", GazeFeed::Bias { deg: 1.0 }, false),
+            ("bias 2 deg", GazeFeed::Bias { deg: 2.0 }, false),
+            ("bias 4 deg", GazeFeed::Bias { deg: 4.0 }, false),
+            ("noise sd 0.5 deg", GazeFeed::Noise { sd_deg: 0.5 }, false),
+            ("noise sd 1 deg", GazeFeed::Noise { sd_deg: 1.0 }, false),
+            ("latency 20 ms", GazeFeed::Latency { ms: 20.0 }, false),
+            ("latency 50 ms", GazeFeed::Latency { ms: 50.0 }, false),
+            ("latency 100 ms", GazeFeed::Latency { ms: 100.0 }, false),
+            ("saccades not counted", GazeFeed::Viewer, true),
+        ];
+        for (name, feed, suppress) in robustness {
+            conditions.push(Condition {
+                name: format!("C=5, {name}"),
+                schedule_model: f2(5.0),
+                measure_model: f2(5.0),
+                feed,
+                suppress_saccades: suppress,
+                schedulers: pair.clone(),
+            });
         }
         let mut budgets: Vec<Budget> = [0.005, 0.01, 0.03, 0.1, 0.3]
             .into_iter()
@@ -297,6 +348,8 @@ pub struct RunResult {
     bound: Vec<Vec<f64>>,
     /// `[condition]`: mean true P with every pair deemed.
     all_deemed: Vec<f64>,
+    /// `[condition]`: frames counted (fewer than `frames` under saccadic suppression).
+    pub counted: Vec<u32>,
 }
 
 fn sim_config(n: u32, seed: u64) -> SimConfig {
@@ -371,10 +424,22 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
     let mut weights: Vec<f64> = Vec::new();
     let mut items: Vec<(f64, u32)> = Vec::new();
     let mut exact_tests = 0.0;
+    let mut counted = vec![0u32; nc];
     let centre = Fixation::at(0.5, 0.5);
+    let viewer = *source.viewer();
+    let display = viewer.display;
+    let px_per_deg =
+        display.viewing_distance_cm * 1f64.to_radians().tan() / display.pixel_pitch_cm();
+    let mut noise = SplitMix64::new(seed ^ 0x0015_E5EE_D000_0000);
     for f in 0..frames {
         let t = f64::from(cfg.warmup + cfg.timing_frames + f) * dt;
         let fixation = gaze.at(t);
+        let before = gaze.at(t - dt);
+        let in_saccade = display.visual_angle_deg(
+            viewer.to_pixels(fixation.x, fixation.y),
+            viewer.to_pixels(before.x, before.y),
+        ) > SACCADE_DEG_PER_S * dt;
+        let (g1, g2) = gaussian_pair(&mut noise);
         let frame_tests = source.step(None, &FrozenClock).sphere_tests;
         exact_tests += frame_tests as f64;
         let input = source.frame_input();
@@ -388,10 +453,24 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
             };
             weights.clear();
             weights.extend(truths.iter().map(|t| t.weight(&view)));
-            all_deemed[ci] += weights.iter().sum::<f64>();
+            let count = !(cond.suppress_saccades && in_saccade);
+            if count {
+                counted[ci] += 1;
+                all_deemed[ci] += weights.iter().sum::<f64>();
+            }
+            let shifted = |dx_deg: f64, dy_deg: f64| {
+                let (w, h) = (f64::from(display.width_px), f64::from(display.height_px));
+                Fixation::at(
+                    (fixation.x + dx_deg * px_per_deg / w).clamp(0.0, 1.0),
+                    (fixation.y + dy_deg * px_per_deg / h).clamp(0.0, 1.0),
+                )
+            };
             let fed = match cond.feed {
                 GazeFeed::Viewer => fixation,
                 GazeFeed::Centre => centre,
+                GazeFeed::Bias { deg } => shifted(deg, 0.0),
+                GazeFeed::Noise { sd_deg } => shifted(sd_deg * g1, sd_deg * g2),
+                GazeFeed::Latency { ms } => gaze.at((t - ms * 1e-3).max(0.0)),
             };
             for (bi, budget) in cfg.budgets.iter().enumerate() {
                 let fb = match *budget {
@@ -420,11 +499,17 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
                         })
                         .map(|(_, w)| w)
                         .sum();
+                    if !count {
+                        continue;
+                    }
                     let cell = &mut cells[ci][bi][si];
                     cell.true_p += tp;
                     cell.tests += r.sphere_tests as f64;
                     cell.prioritise_ms += p.prioritise_ns as f64 * 1e-6;
                     max_tests = max_tests.max(r.sphere_tests);
+                }
+                if !count {
+                    continue;
                 }
                 items.clear();
                 items.extend(weights.iter().zip(&truths).map(|(&w, t)| (w, t.cost)));
@@ -432,18 +517,20 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
             }
         }
     }
+    // Means over the frames each condition counted.
+    for ci in 0..nc {
+        let k = 1.0 / f64::from(counted[ci].max(1));
+        for c in cells[ci].iter_mut().flatten() {
+            c.true_p *= k;
+            c.tests *= k;
+            c.prioritise_ms *= k;
+        }
+        for b in &mut bound[ci] {
+            *b *= k;
+        }
+        all_deemed[ci] *= k;
+    }
     let k = 1.0 / f64::from(frames.max(1));
-    for c in cells.iter_mut().flatten().flatten() {
-        c.true_p *= k;
-        c.tests *= k;
-        c.prioritise_ms *= k;
-    }
-    for b in bound.iter_mut().flatten() {
-        *b *= k;
-    }
-    for a in &mut all_deemed {
-        *a *= k;
-    }
     Ok(RunResult {
         n,
         seed,
@@ -453,7 +540,17 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
         cells,
         bound,
         all_deemed,
+        counted,
     })
+}
+
+/// Two independent standard normal variates (Box-Muller).
+fn gaussian_pair(rng: &mut SplitMix64) -> (f64, f64) {
+    let u = rng.next_f64().max(f64::MIN_POSITIVE);
+    let v = rng.next_f64();
+    let r = (-2.0 * u.ln()).sqrt();
+    let a = std::f64::consts::TAU * v;
+    (r * a.cos(), r * a.sin())
 }
 
 /// Run every (N, seed) on `cfg.jobs` threads; results in (N, seed) order.
@@ -683,8 +780,19 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
             narrow.fmt(3),
             tests.fmt(3)
         );
-        for cond in &cfg.conditions {
-            let _ = writeln!(s, "**{}**\n", cond.name);
+        for (ci, cond) in cfg.conditions.iter().enumerate() {
+            if cond.suppress_saccades {
+                let c = MeanCi::of(rs.iter().map(|r| f64::from(r.counted[ci])));
+                let _ = writeln!(
+                    s,
+                    "**{}** (frames with gaze slower than {SACCADE_DEG_PER_S} deg/s: {} of {})\n",
+                    cond.name,
+                    c.fmt(3),
+                    cfg.frames_for(n)
+                );
+            } else {
+                let _ = writeln!(s, "**{}**\n", cond.name);
+            }
             let mut head = String::from("| scheduler |");
             let mut rule = String::from("| --- |");
             for b in &cfg.budgets {
@@ -762,5 +870,59 @@ mod tests {
         assert!(rows.iter().any(|r| r.scheduler == "clairvoyant"));
         let md = markdown(&cfg, &runs, &rows);
         assert!(md.contains("| priced |") && md.contains("| clairvoyant |"));
+    }
+
+    fn condition(name: &str, feed: GazeFeed, suppress: bool) -> Condition {
+        Condition {
+            name: name.into(),
+            schedule_model: f2(5.0),
+            measure_model: f2(5.0),
+            feed,
+            suppress_saccades: suppress,
+            schedulers: vec![
+                SchedulerSpec::plain(SchedulerKind::RoundRobin),
+                SchedulerSpec::plain(SchedulerKind::Priced),
+            ],
+        }
+    }
+
+    #[test]
+    fn tracker_faults_reach_the_scheduler_and_suppression_skips_saccades() {
+        let mut cfg = OpenLoopConfig::quick();
+        cfg.ns = vec![300];
+        cfg.seeds = vec![3];
+        cfg.frames = vec![(300, 40)];
+        cfg.warmup = 5;
+        cfg.timing_frames = 1;
+        cfg.budgets = vec![Budget::Tests(0.05)];
+        cfg.conditions = vec![
+            condition("true", GazeFeed::Viewer, false),
+            condition("bias 0", GazeFeed::Bias { deg: 0.0 }, false),
+            condition("latency 0", GazeFeed::Latency { ms: 0.0 }, false),
+            condition("noise 0", GazeFeed::Noise { sd_deg: 0.0 }, false),
+            condition("bias 15", GazeFeed::Bias { deg: 15.0 }, false),
+            condition("latency 300", GazeFeed::Latency { ms: 300.0 }, false),
+            condition("suppressed", GazeFeed::Viewer, true),
+        ];
+        let runs = run(&cfg).expect("runs");
+        let r = &runs[0];
+        let priced = |ci: usize| r.cells[ci][0][1].true_p;
+        // A fault of size zero is the true gaze, bit for bit.
+        for ci in 1..4 {
+            assert_eq!(priced(ci).to_bits(), priced(0).to_bits(), "condition {ci}");
+        }
+        // A gross bias or latency points the scheduler at the wrong place.
+        assert!(priced(4) > priced(0), "{} vs {}", priced(4), priced(0));
+        assert!(priced(5) != priced(0));
+        // The scripted viewer makes saccades within 40 frames: those frames are not counted.
+        assert_eq!(r.counted[0], 40);
+        assert!(r.counted[6] > 0 && r.counted[6] < 40, "{:?}", r.counted);
+        // Round-robin does not see the gaze: the same on every unsuppressed condition.
+        for ci in 1..6 {
+            assert_eq!(
+                r.cells[ci][0][0].true_p.to_bits(),
+                r.cells[0][0][0].true_p.to_bits()
+            );
+        }
     }
 }
