@@ -1,34 +1,83 @@
 //! The study's figures (the paper's figures 4, 5 and 6, and the budget sweep), built from the
 //! grouped runs; [`crate::plots`] draws them.
+//!
+//! The paper's claims are ratios ("up to 16 times lower", "roughly halves"), so beside every
+//! panel of absolute values there is a panel of the ratio itself, paired by seed with its 95% CI
+//! and the claim as a reference line. Estimates are dashed and the audited (true) values solid,
+//! in the same colour. Every axis names its unit: T in milliseconds, Δ in scene units (the
+//! shape radius is 1), P in the perceptual model's unit of gap (degrees of visual angle for F2
+//! in degrees, a ratio for F1).
 
-use foveal_engine::SchedulerKind;
+use foveal_engine::{EccentricityUnit, PerceptualFunction, PerceptualModel, SchedulerKind};
 
 use crate::plots::{Figure, Panel, Series};
 use crate::protocol::{Mode, Part, StudyConfig};
-use crate::report::{Group, Metric, find};
+use crate::report::{Group, Metric, find, paired_ratio};
+use crate::stats::MeanCi;
 
-fn rr_series(gs: &[Group<'_>], ns: &[u32], mode: Mode, m: Metric, name: String) -> Series {
-    scheduler_series(gs, ns, mode, SchedulerKind::RoundRobin, m, name)
+/// The paper's claim for interruption: T "up to 16 times lower" (section 4).
+const PAPER_T_RATIO: f64 = 16.0;
+/// The paper's claim for priority scheduling: P "roughly halves" (section 4).
+const PAPER_P_RATIO: f64 = 0.5;
+
+/// Unit of P (and of the gap g') under `model`.
+pub fn p_unit(model: &PerceptualModel) -> &'static str {
+    match (model.function, model.unit) {
+        (PerceptualFunction::F1, _) => "gap / eccentricity",
+        (_, EccentricityUnit::Degrees) => "deg",
+        (_, EccentricityUnit::Pixels) => "px",
+    }
 }
 
-fn scheduler_series(
+/// A series over the table's N for one mode and scheduler.
+fn over_n(
     gs: &[Group<'_>],
-    ns: &[u32],
-    mode: Mode,
+    modes: &[(u32, Mode)],
     k: SchedulerKind,
+    m: Metric,
+    name: String,
+    dashed: bool,
+) -> Series {
+    Series {
+        name,
+        points: modes
+            .iter()
+            .filter_map(|&(n, mode)| {
+                find(gs, Part::Table, n, mode, k).map(|g| (f64::from(n), g.ci(m)))
+            })
+            .collect(),
+        dashed,
+    }
+}
+
+/// A paired ratio `m(a) / m(b)` over the table's N.
+fn ratio_over_n(
+    gs: &[Group<'_>],
+    modes: &[(u32, Mode, Mode)],
+    (ka, kb): (SchedulerKind, SchedulerKind),
     m: Metric,
     name: String,
 ) -> Series {
     Series {
         name,
-        points: ns
+        points: modes
             .iter()
-            .filter_map(|&n| find(gs, Part::Table, n, mode, k).map(|g| (f64::from(n), g.ci(m))))
+            .filter_map(|&(n, ma, mb)| {
+                let a = find(gs, Part::Table, n, ma, ka)?;
+                let b = find(gs, Part::Table, n, mb, kb)?;
+                Some((f64::from(n), paired_ratio(a, b, m)))
+            })
             .collect(),
+        dashed: false,
     }
 }
 
-/// Mode of the table with the wall-clock budget, if any N has one.
+/// The same mode at every N.
+fn at_every_n(cfg: &StudyConfig, mode: Mode) -> Vec<(u32, Mode)> {
+    cfg.ns.iter().map(|&n| (n, mode)).collect()
+}
+
+/// The wall-clock mode of each N that has one (the paper's target time differs by N).
 fn ms_modes(cfg: &StudyConfig) -> Vec<(u32, Mode)> {
     cfg.ns
         .iter()
@@ -41,105 +90,102 @@ fn ms_modes(cfg: &StudyConfig) -> Vec<(u32, Mode)> {
         .collect()
 }
 
-/// Series over N for the paper-ms mode, whose parameter differs by N.
-fn ms_series(
-    cfg: &StudyConfig,
-    gs: &[Group<'_>],
-    k: SchedulerKind,
-    m: Metric,
-    name: &str,
-) -> Series {
-    Series {
-        name: name.into(),
-        points: ms_modes(cfg)
-            .into_iter()
-            .filter_map(|(n, mode)| {
-                find(gs, Part::Table, n, mode, k).map(|g| (f64::from(n), g.ci(m)))
-            })
-            .collect(),
+fn panel(title: String, y_label: String, series: Vec<Series>) -> Panel {
+    Panel {
+        title,
+        x_label: "bodies N".into(),
+        y_label,
+        log_x: true,
+        log_y: true,
+        series,
+        references: Vec::new(),
     }
 }
 
 /// Figures 4, 5 and 6 of the paper from the table part.
 pub fn table_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure)> {
-    let ns = &cfg.ns;
     let t_mean: Metric = |r| r.t_ms.mean();
     let t_sd: Metric = |r| r.t_ms.sd();
     let rr = SchedulerKind::RoundRobin;
-    let mut modes: Vec<(Mode, String)> = vec![
-        (Mode::Exact, "exact".into()),
-        (Mode::Zero, "interrupt at 0".into()),
-    ];
-    modes.extend(
-        cfg.fractions
-            .iter()
-            .map(|&f| (Mode::Fraction(f), format!("{f} of exact cost"))),
-    );
-    modes.extend(
+    let pu = p_unit(&cfg.model);
+    // Every interrupted budget as (label, mode per N).
+    let mut budgets: Vec<(String, Vec<(u32, Mode)>)> =
+        vec![("interrupt at 0".into(), at_every_n(cfg, Mode::Zero))];
+    budgets.extend(cfg.fractions.iter().map(|&f| {
+        (
+            format!("{f} of exact cost"),
+            at_every_n(cfg, Mode::Fraction(f)),
+        )
+    }));
+    budgets.extend(
         cfg.tests_budgets
             .iter()
-            .map(|&t| (Mode::Tests(t), format!("{t} sphere tests"))),
+            .map(|&t| (format!("{t} sphere tests"), at_every_n(cfg, Mode::Tests(t)))),
     );
-    let has_ms = !ms_modes(cfg).is_empty();
-    let ms_name = format!(
-        "paper target / {}",
-        cfg.paper_ms_scale
+    let ms = ms_modes(cfg);
+    if !ms.is_empty() {
+        let k = cfg
+            .paper_ms_scale
             .map(|k| k.to_string())
-            .unwrap_or_default()
-    );
+            .unwrap_or_default();
+        budgets.push((format!("paper target / {k}"), ms.clone()));
+    }
+    let exact = at_every_n(cfg, Mode::Exact);
     let time_panel = |title: &str, y: &str, m: Metric| {
-        let mut series: Vec<Series> = modes
-            .iter()
-            .map(|(mode, name)| rr_series(gs, ns, *mode, m, name.clone()))
-            .collect();
-        if has_ms {
-            series.push(ms_series(cfg, gs, rr, m, &ms_name));
-        }
-        Panel {
-            title: title.into(),
-            x_label: "bodies N".into(),
-            y_label: y.into(),
-            log_x: true,
-            log_y: true,
-            series,
-        }
+        let mut series = vec![over_n(gs, &exact, rr, m, "exact".into(), false)];
+        series.extend(
+            budgets
+                .iter()
+                .map(|(name, modes)| over_n(gs, modes, rr, m, name.clone(), false)),
+        );
+        panel(title.into(), y.into(), series)
     };
+    let mut speedup = panel(
+        "T exact / T interrupted (paired by seed)".into(),
+        "ratio of mean T".into(),
+        budgets
+            .iter()
+            .map(|(name, modes)| {
+                let pairs: Vec<(u32, Mode, Mode)> =
+                    modes.iter().map(|&(n, m)| (n, Mode::Exact, m)).collect();
+                ratio_over_n(gs, &pairs, (rr, rr), t_mean, name.clone())
+            })
+            .collect(),
+    );
+    speedup.references = vec![(PAPER_T_RATIO, "16x (paper)".into())];
     let fig4 = Figure {
         panels: vec![
             time_panel("Mean collision time T (round-robin)", "mean T (ms)", t_mean),
-            time_panel("Standard deviation of T", "sd T (ms)", t_sd),
+            time_panel("Standard deviation of T", "sd of T (ms)", t_sd),
+            speedup,
         ],
     };
-    let inacc_panel = |title: &str, y: &str, est: Metric, truth: Metric| {
+    let inacc_panel = |title: &str, y: String, est: Metric, truth: Metric| {
         let mut series = Vec::new();
-        for (mode, name) in modes.iter().filter(|(m, _)| *m != Mode::Exact) {
-            series.push(rr_series(gs, ns, *mode, est, format!("{name}, estimate")));
-            series.push(rr_series(gs, ns, *mode, truth, format!("{name}, true")));
+        for (name, modes) in budgets.iter().filter(|(n, _)| n != "interrupt at 0") {
+            series.push(over_n(
+                gs,
+                modes,
+                rr,
+                est,
+                format!("{name}, estimate"),
+                true,
+            ));
+            series.push(over_n(gs, modes, rr, truth, format!("{name}, true"), false));
         }
-        if has_ms {
-            series.push(ms_series(cfg, gs, rr, est, &format!("{ms_name}, estimate")));
-            series.push(ms_series(cfg, gs, rr, truth, &format!("{ms_name}, true")));
-        }
-        Panel {
-            title: title.into(),
-            x_label: "bodies N".into(),
-            y_label: y.into(),
-            log_x: true,
-            log_y: true,
-            series,
-        }
+        panel(title.into(), y, series)
     };
     let fig5 = Figure {
         panels: vec![
             inacc_panel(
                 "Geometric inaccuracy Δ (round-robin)",
-                "mean Δ per frame",
+                "mean Δ per frame (scene units)".into(),
                 |r| r.delta.mean(),
                 |r| r.true_delta.mean(),
             ),
             inacc_panel(
                 "Perceived inaccuracy P (round-robin)",
-                "mean P per frame",
+                format!("mean P per frame ({pu})"),
                 |r| r.p.mean(),
                 |r| r.true_p.mean(),
             ),
@@ -149,116 +195,112 @@ pub fn table_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure
         ("fig4_time".to_string(), fig4),
         ("fig5_inaccuracy".to_string(), fig5),
     ];
-    for &f in &cfg.fractions {
-        let mode = Mode::Fraction(f);
-        let sched_panel = |title: String, y: &str, m: Metric| Panel {
-            title,
-            x_label: "bodies N".into(),
-            y_label: y.into(),
-            log_x: true,
-            log_y: true,
-            series: cfg
-                .schedulers
+    let tp: Metric = |r| r.true_p.mean();
+    let scheduler_figure = |title: &str, modes: &[(u32, Mode)]| {
+        let absolute = panel(
+            format!("True P per scheduler, {title}"),
+            format!("mean true P per frame ({pu}, audit)"),
+            cfg.schedulers
                 .iter()
-                .map(|&k| scheduler_series(gs, ns, mode, k, m, k.name().into()))
+                .map(|&k| over_n(gs, modes, k, tp, k.name().into(), false))
                 .collect(),
-        };
+        );
+        let pairs: Vec<(u32, Mode, Mode)> = modes.iter().map(|&(n, m)| (n, m, m)).collect();
+        let mut ratio = panel(
+            format!("True P / round-robin's, {title} (paired by seed)"),
+            "ratio of mean true P".into(),
+            cfg.schedulers
+                .iter()
+                .filter(|&&k| k != rr)
+                .map(|&k| ratio_over_n(gs, &pairs, (k, rr), tp, k.name().into()))
+                .collect(),
+        );
+        ratio.references = vec![
+            (PAPER_P_RATIO, "halved (paper)".into()),
+            (1.0, "round-robin".into()),
+        ];
+        Figure {
+            panels: vec![absolute, ratio],
+        }
+    };
+    for &f in &cfg.fractions {
         out.push((
             format!("fig6_schedulers_f{f}"),
-            Figure {
-                panels: vec![
-                    sched_panel(
-                        format!("P per scheduler, budget {f} of exact"),
-                        "mean P (estimate)",
-                        |r| r.p.mean(),
-                    ),
-                    sched_panel(
-                        format!("True P per scheduler, budget {f} of exact"),
-                        "mean true P (audit)",
-                        |r| r.true_p.mean(),
-                    ),
-                ],
-            },
+            scheduler_figure(
+                &format!("budget {f} of exact"),
+                &at_every_n(cfg, Mode::Fraction(f)),
+            ),
         ));
     }
-    if has_ms {
-        let panel = |title: String, y: &str, m: Metric| Panel {
-            title,
-            x_label: "bodies N".into(),
-            y_label: y.into(),
-            log_x: true,
-            log_y: true,
-            series: cfg
-                .schedulers
-                .iter()
-                .map(|&k| ms_series(cfg, gs, k, m, k.name()))
-                .collect(),
-        };
+    if !ms.is_empty() {
         out.push((
             "fig6_schedulers_ms".to_string(),
-            Figure {
-                panels: vec![
-                    panel(
-                        format!("P per scheduler, {ms_name} ms"),
-                        "mean P (estimate)",
-                        |r| r.p.mean(),
-                    ),
-                    panel(
-                        format!("True P per scheduler, {ms_name} ms"),
-                        "mean true P (audit)",
-                        |r| r.true_p.mean(),
-                    ),
-                ],
-            },
+            scheduler_figure("the paper's target times (wall clock)", &ms),
         ));
     }
     out
 }
 
-/// True P (and estimated P) against budget per scheduler, one figure per N of the curves.
+/// True P against budget per scheduler, and its ratio to round-robin's, one figure per N.
 pub fn curve_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure)> {
     let Some(c) = &cfg.curves else {
         return Vec::new();
     };
+    let pu = p_unit(&cfg.model);
+    let rr = SchedulerKind::RoundRobin;
+    let tp: Metric = |r| r.true_p.mean();
     c.ns.iter()
         .map(|&n| {
-            let panel = |title: String, y: &str, m: Metric| Panel {
-                title,
-                x_label: "budget (fraction of exact narrow-phase cost)".into(),
-                y_label: y.into(),
-                log_x: true,
-                log_y: true,
-                series: cfg
-                    .schedulers
+            let x_label = "budget (fraction of the exact narrow-phase cost)".to_string();
+            let series = |ratio: bool| -> Vec<Series> {
+                cfg.schedulers
                     .iter()
+                    .filter(|&&k| !ratio || k != rr)
                     .map(|&k| Series {
                         name: k.name().into(),
                         points: c
                             .fractions
                             .iter()
                             .filter_map(|&f| {
-                                find(gs, Part::Curves, n, Mode::Fraction(f), k)
-                                    .map(|g| (f, g.ci(m)))
+                                let g = find(gs, Part::Curves, n, Mode::Fraction(f), k)?;
+                                let v: MeanCi = if ratio {
+                                    let b = find(gs, Part::Curves, n, Mode::Fraction(f), rr)?;
+                                    paired_ratio(g, b, tp)
+                                } else {
+                                    g.ci(tp)
+                                };
+                                Some((f, v))
                             })
                             .collect(),
+                        dashed: false,
                     })
-                    .collect(),
+                    .collect()
+            };
+            let absolute = Panel {
+                title: format!("True P against budget, N = {n}"),
+                x_label: x_label.clone(),
+                y_label: format!("mean true P per frame ({pu}, audit)"),
+                log_x: true,
+                log_y: true,
+                series: series(false),
+                references: Vec::new(),
+            };
+            let ratio = Panel {
+                title: format!("True P / round-robin's, N = {n} (paired by seed)"),
+                x_label,
+                y_label: "ratio of mean true P".into(),
+                log_x: true,
+                log_y: true,
+                series: series(true),
+                references: vec![
+                    (PAPER_P_RATIO, "halved".into()),
+                    (1.0, "round-robin".into()),
+                ],
             };
             (
                 format!("curves_n{n}"),
                 Figure {
-                    panels: vec![
-                        panel(
-                            format!("True P against budget, N = {n}"),
-                            "mean true P (audit)",
-                            |r| r.true_p.mean(),
-                        ),
-                        panel(
-                            format!("Estimated P against budget, N = {n}"),
-                            "mean P (estimate)",
-                            |r| r.p.mean(),
-                        ),
-                    ],
+                    panels: vec![absolute, ratio],
                 },
             )
         })

@@ -1,29 +1,37 @@
 //! Figures as SVG and PNG (plotters): line charts of means across seeds with 95% CI error bars.
 //!
 //! Log axes are drawn by plotting log10 of the values on a linear axis and labelling ticks with the
-//! original values, so one code path serves both. Text needs a TrueType font found through
+//! original values, so one code path serves both; the ticks are where a reader needs them, not
+//! where an even spacing of the logarithm falls: on x at the values actually tested (the N or
+//! budgets of the protocol), on a logarithmic y at 1, 2 and 5 times each power of ten, with the
+//! minor grid at every integer multiple of a power of ten. Legends sit beside the chart, never
+//! over the data; a series may be dashed (estimates are dashed, audited values solid), and a
+//! panel may carry reference lines (the paper's "16x", a halving). Text needs a TrueType font found through
 //! fontconfig (plotters' `ttf` feature); if none can be loaded the figure is drawn again without any
 //! text (axes, lines and error bars only) and [`Rendered::with_text`] says so.
 
 use std::path::{Path, PathBuf};
 
 use plotters::coord::Shift;
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::prelude::*;
 
 use crate::error::BenchError;
 use crate::stats::MeanCi;
 
 /// One line: points (x, mean ± CI).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Series {
     /// Legend entry.
     pub name: String,
     /// Points in x order.
     pub points: Vec<(f64, MeanCi)>,
+    /// Drawn dashed (an estimate beside its audited value).
+    pub dashed: bool,
 }
 
 /// One chart.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Panel {
     /// Chart title.
     pub title: String,
@@ -37,6 +45,8 @@ pub struct Panel {
     pub log_y: bool,
     /// Lines.
     pub series: Vec<Series>,
+    /// Horizontal reference lines: (y, label).
+    pub references: Vec<(f64, String)>,
 }
 
 /// Panels side by side.
@@ -57,8 +67,10 @@ pub struct Rendered {
     pub with_text: bool,
 }
 
-const PANEL_W: u32 = 640;
+const PANEL_W: u32 = 820;
 const PANEL_H: u32 = 480;
+/// Width of the legend column to the right of each chart.
+const LEGEND_W: u32 = 200;
 
 const COLORS: [RGBColor; 8] = [
     RGBColor(31, 119, 180),
@@ -96,6 +108,106 @@ fn tick(v: f64, log: bool) -> String {
         let d = (-a.log10().floor()) as usize + 1;
         format!("{x:.d$}")
     }
+}
+
+/// A linear axis over transformed values whose ticks (and minor grid lines) are given, not
+/// chosen by plotters: see [`ticks`].
+#[derive(Debug, Clone)]
+struct TickedAxis {
+    lo: f64,
+    hi: f64,
+    bold: Vec<f64>,
+    light: Vec<f64>,
+}
+
+impl Ranged for TickedAxis {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, v: &f64, limit: (i32, i32)) -> i32 {
+        if self.hi == self.lo {
+            return (limit.1 - limit.0) / 2;
+        }
+        let t = (v - self.lo) / (self.hi - self.lo);
+        limit.0 + (t * f64::from(limit.1 - limit.0)).round() as i32
+    }
+
+    fn key_points<H: KeyPointHint>(&self, hint: H) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.light.clone()
+        } else {
+            self.bold.clone()
+        }
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.lo..self.hi
+    }
+}
+
+/// Tick positions (transformed) for an axis over [lo, hi] (transformed): on x the tested values,
+/// on a log y 1, 2 and 5 times the powers of ten, on a linear y about eight round steps.
+fn ticks(lo: f64, hi: f64, log: bool, tested: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let inside = |v: &f64| *v >= lo - 1e-9 && *v <= hi + 1e-9;
+    if !tested.is_empty() {
+        let mut t: Vec<f64> = tested
+            .iter()
+            .filter_map(|&v| tx(v, log))
+            .filter(inside)
+            .collect();
+        t.sort_by(f64::total_cmp);
+        t.dedup();
+        return (t, minor(lo, hi, log));
+    }
+    if log {
+        let mut t = Vec::new();
+        // Over more than three decades, label the powers of ten alone.
+        let mults: &[f64] = if hi - lo > 3.0 {
+            &[1.0]
+        } else {
+            &[1.0, 2.0, 5.0]
+        };
+        for e in (lo.floor() as i32 - 1)..=(hi.ceil() as i32 + 1) {
+            for &m in mults {
+                t.push(f64::from(e) + m.log10());
+            }
+        }
+        t.retain(inside);
+        // A narrow range may hold fewer than two of them: fall back to every integer multiple.
+        if t.len() < 2 {
+            t = minor(lo, hi, true);
+        }
+        return (t, minor(lo, hi, true));
+    }
+    let span = (hi - lo).max(1e-12);
+    let raw = span / 8.0;
+    let mag = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .map(|k| k * mag)
+        .find(|s| *s >= raw)
+        .unwrap_or(10.0 * mag);
+    let t: Vec<f64> = ((lo / step).ceil() as i64..=(hi / step).floor() as i64)
+        .map(|k| k as f64 * step)
+        .collect();
+    (t, Vec::new())
+}
+
+/// Minor grid of a log axis: every integer multiple of each power of ten inside [lo, hi].
+fn minor(lo: f64, hi: f64, log: bool) -> Vec<f64> {
+    if !log {
+        return Vec::new();
+    }
+    let mut t = Vec::new();
+    for e in (lo.floor() as i32 - 1)..=(hi.ceil() as i32) {
+        for m in 1..10 {
+            let v = f64::from(e) + f64::from(m).log10();
+            if v >= lo && v <= hi {
+                t.push(v);
+            }
+        }
+    }
+    t
 }
 
 /// Transformed points of a series: (x, y, y_lo, y_hi).
@@ -139,12 +251,37 @@ fn range(vals: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
 fn draw_panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     p: &Panel,
+    palette: &[String],
     text: bool,
 ) -> Result<(), String> {
+    let (plot_area, legend_area) = area.split_horizontally(PANEL_W - LEGEND_W);
     let pts: Vec<Vec<(f64, f64, f64, f64)>> = p.series.iter().map(|s| points(s, p)).collect();
+    let tested: Vec<f64> = {
+        let mut v: Vec<f64> = p
+            .series
+            .iter()
+            .flat_map(|s| s.points.iter().map(|q| q.0))
+            .collect();
+        v.sort_by(f64::total_cmp);
+        v.dedup();
+        v
+    };
+    let refs: Vec<(f64, &str)> = p
+        .references
+        .iter()
+        .filter_map(|(y, l)| tx(*y, p.log_y).map(|t| (t, l.as_str())))
+        .collect();
     let (x0, x1) = range(pts.iter().flatten().map(|q| q.0), p.log_x);
-    let (y0, y1) = range(pts.iter().flatten().flat_map(|q| [q.1, q.2, q.3]), p.log_y);
-    let mut b = ChartBuilder::on(area);
+    let (y0, y1) = range(
+        pts.iter()
+            .flatten()
+            .flat_map(|q| [q.1, q.2, q.3])
+            .chain(refs.iter().map(|r| r.0)),
+        p.log_y,
+    );
+    let (xt, xm) = ticks(x0, x1, p.log_x, &tested);
+    let (yt, ym) = ticks(y0, y1, p.log_y, &[]);
+    let mut b = ChartBuilder::on(&plot_area);
     b.margin(12);
     if text {
         b.caption(&p.title, ("sans-serif", 18))
@@ -152,34 +289,69 @@ fn draw_panel<DB: DrawingBackend>(
             .y_label_area_size(64);
     }
     let mut chart = b
-        .build_cartesian_2d(x0..x1, y0..y1)
+        .build_cartesian_2d(
+            TickedAxis {
+                lo: x0,
+                hi: x1,
+                bold: xt,
+                light: xm,
+            },
+            TickedAxis {
+                lo: y0,
+                hi: y1,
+                bold: yt,
+                light: ym,
+            },
+        )
         .map_err(|e| e.to_string())?;
     let (lx, ly) = (p.log_x, p.log_y);
     let fx = move |v: &f64| tick(*v, lx);
     let fy = move |v: &f64| tick(*v, ly);
     let mut mesh = chart.configure_mesh();
-    mesh.light_line_style(RGBColor(235, 235, 235));
+    mesh.light_line_style(RGBColor(235, 235, 235))
+        .bold_line_style(RGBColor(205, 205, 205));
     if text {
         mesh.x_desc(p.x_label.as_str())
             .y_desc(p.y_label.as_str())
             .x_label_formatter(&fx)
-            .y_label_formatter(&fy)
-            .x_labels(8)
-            .y_labels(8);
+            .y_label_formatter(&fy);
     } else {
         mesh.x_labels(0).y_labels(0);
     }
     mesh.draw().map_err(|e| e.to_string())?;
-    for (i, (s, q)) in p.series.iter().zip(&pts).enumerate() {
-        let color = COLORS[i % COLORS.len()];
-        let style = ShapeStyle::from(&color).stroke_width(2);
-        let line = chart
-            .draw_series(LineSeries::new(q.iter().map(|q| (q.0, q.1)), style))
+    let grey = RGBColor(90, 90, 90);
+    for (y, label) in &refs {
+        chart
+            .draw_series(DashedLineSeries::new(
+                [(x0, *y), (x1, *y)],
+                8,
+                5,
+                grey.stroke_width(1),
+            ))
             .map_err(|e| e.to_string())?;
         if text {
-            line.label(s.name.as_str()).legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-            });
+            chart
+                .draw_series(std::iter::once(Text::new(
+                    (*label).to_string(),
+                    (x0 + 0.01 * (x1 - x0), *y),
+                    ("sans-serif", 12).into_font().color(&grey),
+                )))
+                .map_err(|e| e.to_string())?;
+        }
+    }
+    for (i, q) in pts.iter().enumerate() {
+        let s = &p.series[i];
+        let color = color_of(palette, s);
+        let style = ShapeStyle::from(&color).stroke_width(2);
+        let line = q.iter().map(|q| (q.0, q.1));
+        if s.dashed {
+            chart
+                .draw_series(DashedLineSeries::new(line, 9, 6, style))
+                .map_err(|e| e.to_string())?;
+        } else {
+            chart
+                .draw_series(LineSeries::new(line, style))
+                .map_err(|e| e.to_string())?;
         }
         chart
             .draw_series(q.iter().map(|q| Circle::new((q.0, q.1), 3, color.filled())))
@@ -192,14 +364,65 @@ fn draw_panel<DB: DrawingBackend>(
             )
             .map_err(|e| e.to_string())?;
     }
-    if text && !p.series.is_empty() {
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 13))
-            .draw()
+    if text {
+        draw_legend(&legend_area, p, palette)?;
+    }
+    Ok(())
+}
+
+/// A series' name without its ", estimate" or ", true" suffix: an estimate and its audited
+/// value share one colour and differ by line style.
+fn base_name(s: &Series) -> &str {
+    s.name
+        .trim_end_matches(", estimate")
+        .trim_end_matches(", true")
+}
+
+/// Base names of a figure's series in order of first appearance: one colour each, the same in
+/// every panel of the figure.
+fn palette(fig: &Figure) -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for s in fig.panels.iter().flat_map(|p| &p.series) {
+        let b = base_name(s);
+        if !names.iter().any(|n| n == b) {
+            names.push(b.to_string());
+        }
+    }
+    names
+}
+
+fn color_of(palette: &[String], s: &Series) -> RGBColor {
+    let i = palette.iter().position(|n| n == base_name(s)).unwrap_or(0);
+    COLORS[i % COLORS.len()]
+}
+
+/// The legend in its own column beside the chart: a swatch (solid or dashed) and the name.
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    p: &Panel,
+    palette: &[String],
+) -> Result<(), String> {
+    let font = ("sans-serif", 13).into_font();
+    for (i, s) in p.series.iter().enumerate() {
+        let y = 48 + 20 * i as i32;
+        let color = color_of(palette, s);
+        if s.dashed {
+            for k in 0..3 {
+                let x = 4 + 9 * k;
+                area.draw(&PathElement::new(
+                    vec![(x, y), (x + 5, y)],
+                    color.stroke_width(2),
+                ))
+                .map_err(|e| e.to_string())?;
+            }
+        } else {
+            area.draw(&PathElement::new(
+                vec![(4, y), (28, y)],
+                color.stroke_width(2),
+            ))
+            .map_err(|e| e.to_string())?;
+        }
+        area.draw(&Text::new(s.name.clone(), (34, y - 7), font.clone()))
             .map_err(|e| e.to_string())?;
     }
     Ok(())
@@ -212,8 +435,9 @@ fn draw<DB: DrawingBackend>(
 ) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     let areas = root.split_evenly((1, fig.panels.len().max(1)));
+    let palette = palette(fig);
     for (a, p) in areas.iter().zip(&fig.panels) {
-        draw_panel(a, p, text)?;
+        draw_panel(a, p, &palette, text)?;
     }
     root.present().map_err(|e| e.to_string())
 }
@@ -267,6 +491,74 @@ pub fn render(fig: &Figure, stem: &Path) -> Result<Rendered, BenchError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn log_ticks_sit_at_the_tested_values_and_round_multiples() {
+        let tested = [10.0, 30.0, 100.0, 300.0, 500.0];
+        let (x0, x1) = (1.0, 2.8);
+        let (t, m) = ticks(x0, x1, true, &tested);
+        let back: Vec<String> = t.iter().map(|&v| tick(v, true)).collect();
+        assert_eq!(back, ["10", "30", "100", "300", "500"]);
+        // Minor grid at 10, 20, ..., 90, 100, 200, ...: log-spaced, not even.
+        assert!(m.iter().any(|&v| tick(v, true) == "20"));
+        let gaps: Vec<f64> = m.windows(2).map(|w| w[1] - w[0]).collect();
+        assert!(gaps.iter().any(|g| (g - 2f64.log10()).abs() < 1e-12));
+        assert!(
+            gaps.iter()
+                .any(|g| (g - (10.0f64 / 9.0).log10()).abs() < 1e-12)
+        );
+        let (y, _) = ticks(-1.2, 1.4, true, &[]);
+        let back: Vec<String> = y.iter().map(|&v| tick(v, true)).collect();
+        assert_eq!(
+            back,
+            ["0.10", "0.20", "0.50", "1.0", "2.0", "5.0", "10", "20"]
+        );
+        let (lin, none) = ticks(0.0, 1.0, false, &[]);
+        assert_eq!(lin.len(), 6);
+        assert!(none.is_empty());
+    }
+
+    #[test]
+    fn a_panel_with_dashed_series_and_references_renders() {
+        let dir = std::env::temp_dir().join(format!("foveal-plots-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("dir");
+        let c = |m: f64| MeanCi {
+            mean: m,
+            half: 0.1 * m,
+            n: 5,
+        };
+        let fig = Figure {
+            panels: vec![Panel {
+                title: "t".into(),
+                x_label: "bodies N".into(),
+                y_label: "ratio".into(),
+                log_x: true,
+                log_y: true,
+                series: vec![
+                    Series {
+                        name: "a, estimate".into(),
+                        points: vec![(10.0, c(1.0)), (100.0, c(3.0))],
+                        dashed: true,
+                    },
+                    Series {
+                        name: "a, true".into(),
+                        points: vec![(10.0, c(2.0)), (100.0, c(4.0))],
+                        dashed: false,
+                    },
+                ],
+                references: vec![(16.0, "16x (paper)".into())],
+            }],
+        };
+        let r = render(&fig, &dir.join("f")).expect("rendered");
+        for f in [&r.svg, &r.png] {
+            assert!(std::fs::metadata(f).map(|m| m.len()).unwrap_or(0) > 100);
+        }
+        let pal = palette(&fig);
+        assert_eq!(pal, ["a"]);
+        let p = &fig.panels[0];
+        assert_eq!(color_of(&pal, &p.series[0]), color_of(&pal, &p.series[1]));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 
     #[test]
     fn ticks_read_back_the_original_values() {
