@@ -44,6 +44,10 @@ struct OpenLoopArgs {
     /// N = 500 only, 3 seeds x 60 frames: seconds.
     #[arg(long)]
     quick: bool,
+    /// The sensitivity grid instead: C in {0.5, 1, 2, 5, 10} degrees, F1 and F3, priority-queue
+    /// thresholds 1-10 degrees, budgets up to 0.5, and where each scheduler halves P.
+    #[arg(long)]
+    grid: bool,
     /// Body counts, comma separated (default 500,10000).
     #[arg(long, value_delimiter = ',')]
     n: Option<Vec<u32>>,
@@ -64,10 +68,22 @@ struct OpenLoopArgs {
 
 fn open_loop(args: &OpenLoopArgs) -> Result<()> {
     use foveal_bench::open_loop as ol;
-    let mut cfg = if args.quick {
-        ol::OpenLoopConfig::quick()
-    } else {
-        ol::OpenLoopConfig::standard()
+    let mut cfg = match (args.grid, args.quick) {
+        (false, false) => ol::OpenLoopConfig::standard(),
+        (false, true) => ol::OpenLoopConfig::quick(),
+        (true, false) => ol::OpenLoopConfig::grid(),
+        (true, true) => {
+            let q = ol::OpenLoopConfig::quick();
+            ol::OpenLoopConfig {
+                ns: q.ns,
+                seeds: q.seeds,
+                frames: q.frames,
+                warmup: q.warmup,
+                timing_frames: q.timing_frames,
+                out: PathBuf::from("results/open-loop-grid-quick"),
+                ..ol::OpenLoopConfig::grid()
+            }
+        }
     };
     if let Some(n) = &args.n {
         cfg.ns = n.clone();

@@ -47,6 +47,8 @@ pub struct SchedulerSpec {
     pub kind: SchedulerKind,
     /// Priced-scheduler switches.
     pub priced: PricedOptions,
+    /// The priority queue's eccentricity threshold, degrees (None: the engine's default).
+    pub threshold_deg: Option<f64>,
 }
 
 impl SchedulerSpec {
@@ -56,6 +58,16 @@ impl SchedulerSpec {
             label: kind.name().into(),
             kind,
             priced: PricedOptions::default(),
+            threshold_deg: None,
+        }
+    }
+
+    /// `kind` (a priority-queue scheduler) with its first queue within `deg` of the fixation.
+    pub fn with_threshold(kind: SchedulerKind, deg: f64) -> Self {
+        Self {
+            label: format!("{}@{deg}deg", kind.name()),
+            threshold_deg: Some(deg),
+            ..Self::plain(kind)
         }
     }
 
@@ -65,6 +77,7 @@ impl SchedulerSpec {
             label: options.label(),
             kind: SchedulerKind::Priced,
             priced: options,
+            threshold_deg: None,
         }
     }
 }
@@ -299,6 +312,68 @@ impl OpenLoopConfig {
         }
     }
 
+    /// The sensitivity grid (`open-loop --grid`): F2 with C in {0.5, 1, 2, 5, 10} degrees, F1 in
+    /// pixels and an F3 (C = 20, 50, 200 px below 20, below 100 and beyond 100 px), each
+    /// scheduled and measured with the same model; the paper's priority queue with thresholds
+    /// of 1, 2, 5 and 10 degrees beside expected-gain and priced; sphere-test budgets 0.005-0.5
+    /// of exact and wall-clock budgets 1/30-1/2 of the exact narrow-phase time. Its report ends
+    /// with the region where each scheduler halves round-robin's true P.
+    pub fn grid() -> Self {
+        let mut schedulers = vec![SchedulerSpec::plain(SchedulerKind::RoundRobin)];
+        for deg in [1.0, 2.0, 5.0, 10.0] {
+            schedulers.push(SchedulerSpec::with_threshold(
+                SchedulerKind::PriorityOnly,
+                deg,
+            ));
+        }
+        schedulers.push(SchedulerSpec::plain(SchedulerKind::ExpectedGain));
+        schedulers.push(SchedulerSpec::plain(SchedulerKind::Priced));
+        let mut models: Vec<(String, PerceptualModel)> = [0.5, 1.0, 2.0, 5.0, 10.0]
+            .into_iter()
+            .map(|c| (format!("F2 C={c}deg"), f2(c)))
+            .collect();
+        models.push(("F1 px".into(), PerceptualModel::f1_pixels()));
+        models.push((
+            "F3 px".into(),
+            PerceptualModel {
+                function: PerceptualFunction::F3 {
+                    c1: 20.0,
+                    c2: 50.0,
+                    c3: 200.0,
+                    e1: 20.0,
+                    e2: 100.0,
+                },
+                unit: EccentricityUnit::Pixels,
+            },
+        ));
+        let conditions = models
+            .into_iter()
+            .map(|(name, m)| Condition {
+                name,
+                schedule_model: m,
+                measure_model: m,
+                feed: GazeFeed::Viewer,
+                suppress_saccades: false,
+                schedulers: schedulers.clone(),
+            })
+            .collect();
+        let mut budgets: Vec<Budget> = [0.005, 0.01, 0.03, 0.1, 0.3, 0.5]
+            .into_iter()
+            .map(Budget::Tests)
+            .collect();
+        budgets.extend(
+            [1.0 / 30.0, 0.1, 1.0 / 3.0, 0.5]
+                .into_iter()
+                .map(Budget::Wall),
+        );
+        Self {
+            budgets,
+            conditions,
+            out: PathBuf::from("results/open-loop-grid"),
+            ..Self::standard()
+        }
+    }
+
     /// A seconds-long version of [`Self::standard`]: N = 500, 3 seeds, 60 frames.
     pub fn quick() -> Self {
         Self {
@@ -378,12 +453,16 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
         for _ in &cfg.budgets {
             let mut v = Vec::new();
             for s in &c.schedulers {
+                let base = sim_config(n, seed);
                 let sc = SimConfig {
                     scheduler: s.kind,
                     priced: s.priced,
                     schedule_model: c.schedule_model,
                     measure_model: c.measure_model,
-                    ..sim_config(n, seed)
+                    eccentricity_threshold_deg: s
+                        .threshold_deg
+                        .unwrap_or(base.eccentricity_threshold_deg),
+                    ..base
                 };
                 v.push(Collider::new(&sc, source.tree(), source.viewer())?);
             }
@@ -829,6 +908,66 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
             s.push('\n');
         }
     }
+    s.push_str(&halving_markdown(cfg, rows));
+    s
+}
+
+/// Where each scheduler halves round-robin's true P: per N and scheduler, the conditions and
+/// budgets at which the paired ratio's 95% CI lies below 0.5 (the paper's "roughly halves"),
+/// marked `yes`; `mean` where only the mean does.
+pub fn halving_markdown(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
+    let mut s = String::from(
+        "### Where each scheduler halves round-robin's true P\n\n`yes`: the paired ratio's 95% CI \
+         lies below 0.5; `mean`: only its mean does; blank: not halved.\n\n",
+    );
+    for &n in &cfg.ns {
+        let mut labels: Vec<&str> = Vec::new();
+        for c in &cfg.conditions {
+            for sch in &c.schedulers {
+                if sch.kind != SchedulerKind::RoundRobin && !labels.contains(&sch.label.as_str()) {
+                    labels.push(&sch.label);
+                }
+            }
+        }
+        for label in labels {
+            let _ = writeln!(s, "**N = {n}, {label}**\n");
+            let mut head = String::from("| condition |");
+            let mut rule = String::from("| --- |");
+            for b in &cfg.budgets {
+                let _ = write!(head, " {} |", b.label());
+                rule.push_str(" --- |");
+            }
+            let _ = writeln!(s, "{head}\n{rule}");
+            for c in &cfg.conditions {
+                if !c.schedulers.iter().any(|x| x.label == label) {
+                    continue;
+                }
+                let _ = write!(s, "| {} |", c.name);
+                for b in &cfg.budgets {
+                    let cell = rows
+                        .iter()
+                        .find(|r| {
+                            r.n == n
+                                && r.condition == c.name
+                                && r.budget == b.label()
+                                && r.scheduler == label
+                        })
+                        .map_or("", |r| {
+                            if r.ratio_rr.hi() < 0.5 {
+                                "yes"
+                            } else if r.ratio_rr.mean < 0.5 {
+                                "mean"
+                            } else {
+                                ""
+                            }
+                        });
+                    let _ = write!(s, " {cell} |");
+                }
+                s.push('\n');
+            }
+            s.push('\n');
+        }
+    }
     s
 }
 
@@ -870,6 +1009,41 @@ mod tests {
         assert!(rows.iter().any(|r| r.scheduler == "clairvoyant"));
         let md = markdown(&cfg, &runs, &rows);
         assert!(md.contains("| priced |") && md.contains("| clairvoyant |"));
+        assert!(md.contains("halves round-robin's true P"));
+    }
+
+    #[test]
+    fn the_grid_covers_models_thresholds_and_budgets() {
+        let g = OpenLoopConfig::grid();
+        assert_eq!(g.conditions.len(), 7);
+        let labels: Vec<&str> = g.conditions[0]
+            .schedulers
+            .iter()
+            .map(|s| s.label.as_str())
+            .collect();
+        assert!(labels.contains(&"priority-only@1deg") && labels.contains(&"priority-only@10deg"));
+        assert!(g.budgets.contains(&Budget::Tests(0.5)) && g.budgets.contains(&Budget::Wall(0.5)));
+        // A tiny run: the halving table marks a cell only where the ratio says so.
+        let mut cfg = g.clone();
+        cfg.ns = vec![150];
+        cfg.seeds = vec![1, 2];
+        cfg.frames = vec![(150, 3)];
+        cfg.warmup = 5;
+        cfg.timing_frames = 1;
+        cfg.budgets = vec![Budget::Tests(0.3)];
+        cfg.conditions.truncate(2);
+        let runs = run(&cfg).expect("runs");
+        let rows = summarise(&cfg, &runs);
+        let md = halving_markdown(&cfg, &rows);
+        for r in rows.iter().filter(|r| r.scheduler == "priced") {
+            let line = md
+                .lines()
+                .skip_while(|l| !l.contains("N = 150, priced"))
+                .find(|l| l.starts_with(&format!("| {} |", r.condition)))
+                .expect("row");
+            let halved = r.ratio_rr.hi() < 0.5;
+            assert_eq!(line.contains("yes"), halved, "{line} vs {:?}", r.ratio_rr);
+        }
     }
 
     fn condition(name: &str, feed: GazeFeed, suppress: bool) -> Condition {
