@@ -14,6 +14,7 @@
 //! pair order.
 
 use crate::fixation::FrameView;
+use crate::math::Vec3;
 use crate::narrow_phase::{NarrowPhase, PairStatus};
 use crate::perception::Viewer;
 use crate::sphere_tree::SphereTree;
@@ -74,21 +75,49 @@ impl Part {
 /// the angle between the unit eye rays of the two points is within the threshold iff their chord
 /// is within the threshold's chord, 2 sin(threshold / 2), which costs a square root and no
 /// trigonometry.
+///
+/// Every candidate pair is tested each frame, so [`Self::contains_point`] tests a world point
+/// without projecting it: the viewer's eye ray through a point's screen position is the
+/// camera-space vector `u = (k x, -k y, depth)` normalised, `k` being the pixel pitch times the
+/// focal length over the viewing distance, and the angle to the fixation's ray `f` is within
+/// the threshold iff `u . f >= |u| cos(threshold)`, which with both sides squared needs no
+/// division and no square root (a few multiplications, against a projection, a division and
+/// two square roots).
 #[derive(Debug, Clone, Copy)]
 pub struct Fovea<'a> {
     viewer: &'a Viewer,
     fixation_ray: [f64; 3],
     threshold_chord: f64,
+    /// cos^2 of the threshold angle (for thresholds below 90 degrees).
+    cos2: f64,
+    /// Pixel pitch times focal length over viewing distance.
+    k: f64,
 }
 
 impl<'a> Fovea<'a> {
     /// Points within `threshold_deg` of `fixation_px`.
     pub fn new(viewer: &'a Viewer, fixation_px: [f64; 2], threshold_deg: f64) -> Self {
+        let t = threshold_deg.clamp(0.0, 89.0).to_radians();
+        let d = &viewer.display;
         Self {
             viewer,
-            fixation_ray: viewer.display.eye_ray(fixation_px),
+            fixation_ray: d.eye_ray(fixation_px),
             threshold_chord: 2.0 * (0.5 * threshold_deg.clamp(0.0, 180.0)).to_radians().sin(),
+            cos2: t.cos() * t.cos(),
+            k: d.pixel_pitch_cm() * viewer.focal_px() / d.viewing_distance_cm,
         }
+    }
+
+    /// Whether world point `p` is seen within the threshold of the fixation (as
+    /// `contains_px(viewer.project(p))`, without the projection; thresholds up to 89 degrees).
+    #[inline]
+    pub fn contains_point(&self, p: Vec3) -> bool {
+        let r = p - self.viewer.eye;
+        let depth = (-r.z).max(1e-9 * (1.0 + r.x.abs() + r.y.abs()));
+        let u = [self.k * r.x, -self.k * r.y, depth];
+        let f = self.fixation_ray;
+        let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
+        dot > 0.0 && dot * dot >= self.cos2 * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
     }
 
     /// Whether the screen point `px` is within the threshold.
@@ -155,7 +184,7 @@ fn measure_with_limit(
             }
             if let Some(f) = fovea {
                 let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
-                if f.contains_px(f.viewer.project(c)) {
+                if f.contains_point(c) {
                     part.m.foveal += 1;
                     part.m.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
                 }
@@ -265,5 +294,46 @@ mod tests {
         assert!(exact.foveal > 0 && exact.foveal < n);
         let two = measure_with_limit(&np, &tree, &world, Some(&view), Some(&fovea), 2, limit);
         assert_eq!(two, sampled);
+    }
+
+    #[test]
+    fn the_projection_free_fovea_test_agrees_with_the_visual_angle() {
+        let viewer = Viewer::new(
+            &CameraConfig::default(),
+            &Display::default(),
+            Vec3::ZERO,
+            20.0,
+        );
+        let mut rng = crate::rng::Rng::new(7);
+        let (mut inside, mut checked) = (0, 0);
+        for (fx, fy, deg) in [
+            (0.5, 0.5, 5.0),
+            (0.1, 0.85, 5.0),
+            (0.7, 0.3, 2.0),
+            (0.4, 0.6, 30.0),
+        ] {
+            let fix = viewer.to_pixels(fx, fy);
+            let fovea = Fovea::new(&viewer, fix, deg);
+            for _ in 0..20_000 {
+                let p = Vec3::new(
+                    rng.range(-5.0, 25.0),
+                    rng.range(-5.0, 25.0),
+                    rng.range(-10.0, 20.0),
+                );
+                let angle = viewer.display.visual_angle_deg(viewer.project(p), fix);
+                // Points within 1e-9 degrees of the boundary may fall either way by rounding.
+                if (angle - deg).abs() < 1e-9 {
+                    continue;
+                }
+                checked += 1;
+                assert_eq!(fovea.contains_point(p), angle < deg, "{p:?} at {angle} deg");
+                assert_eq!(fovea.contains_px(viewer.project(p)), angle < deg);
+                inside += usize::from(angle < deg);
+            }
+        }
+        assert!(
+            inside > 500 && inside < checked - 500,
+            "{inside} of {checked}"
+        );
     }
 }
