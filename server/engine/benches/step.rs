@@ -7,6 +7,9 @@
 //!   N = 100,000); select one kind with e.g. `-- broad_phase/grid`.
 //! - `narrow_exact/10000`: the exact narrow phase alone over one frame's candidate pairs; the
 //!   throughput line gives sphere tests per second.
+//! - `measure/{settled,deemed}/100000`: the metrics pass (counts, the fovea count over every
+//!   candidate pair, Δ and P over the deemed ones, sampled beyond 25,000) of one frame at
+//!   N = 100,000 with a fixation, every pair settled exactly or every pair deemed.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -127,5 +130,41 @@ fn narrow(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, frame, broad, narrow);
+fn measure(c: &mut Criterion) {
+    use foveal_engine::collider::Collider;
+    use foveal_engine::{FrameBudget, FrameReport, PhaseProfile};
+    let mut g = c.benchmark_group("measure");
+    g.measurement_time(Duration::from_secs(8));
+    g.sample_size(20);
+    let n = 100_000u32;
+    let mut sim = Simulation::new(exact(n)).expect("valid");
+    for _ in 0..10 {
+        sim.step(None, &FrozenClock);
+    }
+    let fixation = Some(foveal_engine::Fixation::at(0.4, 0.5));
+    let round_robin = SimConfig {
+        scheduler: SchedulerKind::RoundRobin,
+        ..exact(n)
+    };
+    for (name, budget) in [
+        ("settled", FrameBudget::Unlimited),
+        ("deemed", FrameBudget::Tests(0)),
+    ] {
+        let mut col = Collider::new(&round_robin, sim.tree(), sim.viewer()).expect("valid");
+        let input = sim.frame_input();
+        let mut r = FrameReport::default();
+        let mut p = PhaseProfile::default();
+        col.collide(&input, fixation, budget, &FrozenClock, &mut r, &mut p);
+        g.throughput(Throughput::Elements(u64::from(r.candidate_pairs)));
+        g.bench_function(BenchmarkId::new(name, n), |b| {
+            b.iter(|| {
+                col.measure(&input, fixation, &mut r);
+                black_box(r.foveal_pairs)
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, frame, broad, narrow, measure);
 criterion_main!(benches);
