@@ -43,7 +43,9 @@ pub struct AuditReport {
     pub false_positives: u32,
     /// Deemed pairs that do collide.
     pub true_positives: u32,
-    /// True Δ: sum over false positives of the real separation of the leaf-sphere sets.
+    /// True Δ: the sum over deemed pairs of the gap each leaves (the separation of its leaf-sphere
+    /// sets), 0 for a deemed pair that truly collides: the quantity
+    /// [`FrameReport::geometric_inaccuracy`] estimates.
     pub geometric_inaccuracy: f64,
     /// True P with the measuring model (None without a fixation).
     pub perceived_inaccuracy: Option<f64>,
@@ -64,7 +66,10 @@ pub struct FrameReport {
     pub fixation: Option<Fixation>,
     /// A fixation was handed in but was not usable (non-finite) and was ignored.
     pub fixation_rejected: bool,
-    /// Geometric inaccuracy Δ: sum of gap estimates over deemed collisions (scene units).
+    /// Geometric inaccuracy Δ, estimated (scene units): the sum over deemed pairs of the gap each
+    /// leaves (0 where the pair truly collides), each gap taken as the paper's upper bound, the
+    /// distance between the centres of the last two spheres found overlapping (section 3); the
+    /// audit's [`AuditReport::geometric_inaccuracy`] is the exact value.
     pub geometric_inaccuracy: f64,
     /// Perceived inaccuracy P with the measuring model (None without a fixation).
     pub perceived_inaccuracy: Option<f64>,
