@@ -185,7 +185,7 @@ impl Calibration {
         }
     }
 
-    /// The table shipped with the engine (depth [`super::calibration_table::DEPTH`]).
+    /// The table shipped with the engine, for the depth it was calibrated at (the paper's, 4).
     pub fn shipped() -> Option<Self> {
         let t = super::calibration_table::BINS;
         let depth = super::calibration_table::DEPTH;
