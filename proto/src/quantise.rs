@@ -19,7 +19,7 @@ pub const QUANTISED_BYTES_PER_BODY: usize = 10;
 
 /// Encode one position coordinate `v` (relative to the volume origin) over `[0, extent]`.
 fn quantise_coordinate(v: f32, extent: f32) -> u16 {
-    if !(extent > 0.0) || !v.is_finite() {
+    if extent.is_nan() || extent <= 0.0 || !v.is_finite() {
         return 0;
     }
     // Clamped: a centre a hair outside the volume (walls reflect after the step) is drawn on it.
@@ -202,7 +202,12 @@ mod tests {
             [1.0, 0.0, 0.0, 0.0],
             [0.0, -1.0, 0.0, 0.0],
             [0.5, 0.5, 0.5, 0.5],
-            [std::f32::consts::FRAC_1_SQRT_2, 0.0, 0.0, std::f32::consts::FRAC_1_SQRT_2],
+            [
+                std::f32::consts::FRAC_1_SQRT_2,
+                0.0,
+                0.0,
+                std::f32::consts::FRAC_1_SQRT_2,
+            ],
         ]);
         out
     }
@@ -213,7 +218,10 @@ mod tests {
         for q in quaternions() {
             let back = dequantise_quaternion(quantise_quaternion(q));
             let norm: f32 = back.iter().map(|c| c * c).sum();
-            assert!((norm - 1.0).abs() < 1e-3, "{q:?} -> {back:?} has norm² {norm}");
+            assert!(
+                (norm - 1.0).abs() < 1e-3,
+                "{q:?} -> {back:?} has norm² {norm}"
+            );
             worst = worst.max(angle_deg(q, back));
         }
         assert!(worst < 0.25, "worst rotation error {worst} degrees");
@@ -221,9 +229,16 @@ mod tests {
 
     #[test]
     fn degenerate_quaternions_encode_the_identity() {
-        for q in [[0.0; 4], [f32::NAN, 0.0, 0.0, 1.0], [f32::INFINITY, 0.0, 0.0, 0.0]] {
+        for q in [
+            [0.0; 4],
+            [f32::NAN, 0.0, 0.0, 1.0],
+            [f32::INFINITY, 0.0, 0.0, 0.0],
+        ] {
             let back = dequantise_quaternion(quantise_quaternion(q));
-            assert!(angle_deg(back, [0.0, 0.0, 0.0, 1.0]) < 0.25, "{q:?} -> {back:?}");
+            assert!(
+                angle_deg(back, [0.0, 0.0, 0.0, 1.0]) < 0.25,
+                "{q:?} -> {back:?}"
+            );
         }
     }
 
@@ -248,7 +263,11 @@ mod tests {
                 assert!((v - w).abs() <= step * 0.5 + 1e-6, "{v} came back as {w}");
             }
         }
-        assert_eq!(back[2], [0.0, 10.0, 0.0], "clamped to the volume, NaN to its origin");
+        assert_eq!(
+            back[2],
+            [0.0, 10.0, 0.0],
+            "clamped to the volume, NaN to its origin"
+        );
     }
 
     #[test]
@@ -258,7 +277,11 @@ mod tests {
         let positions: Vec<[f32; 3]> = (0..n)
             .map(|i| {
                 let f = i as f32 / n as f32;
-                [f * 10.0, (f * 37.0).fract() * 10.0, (f * 101.0).fract() * 10.0]
+                [
+                    f * 10.0,
+                    (f * 37.0).fract() * 10.0,
+                    (f * 101.0).fract() * 10.0,
+                ]
             })
             .collect();
         let orientations: Vec<[f32; 4]> = quaternions().into_iter().cycle().take(n).collect();
@@ -311,12 +334,12 @@ mod tests {
 
     #[test]
     fn collisions_round_trip_real_and_deemed_apart() {
-        let c = pb::Collisions::pack(
-            [(0, 1), (7, u32::MAX)].into_iter(),
-            [(2, 3)].into_iter(),
-        );
+        let c = pb::Collisions::pack([(0, 1), (7, u32::MAX)].into_iter(), [(2, 3)].into_iter());
         let back = pb::Collisions::decode(c.encode_to_vec().as_slice()).expect("decodes");
-        assert_eq!(back.real_pairs().collect::<Vec<_>>(), vec![(0, 1), (7, u32::MAX)]);
+        assert_eq!(
+            back.real_pairs().collect::<Vec<_>>(),
+            vec![(0, 1), (7, u32::MAX)]
+        );
         assert_eq!(back.deemed_pairs().collect::<Vec<_>>(), vec![(2, 3)]);
         assert_eq!(pb::Collisions::default().real_pairs().count(), 0);
     }
