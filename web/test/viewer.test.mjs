@@ -67,10 +67,13 @@ describe("viewer at N = 500 under a sphere-test budget", { skip }, () => {
 
   test("the canvas is drawn and changes between frames", async () => {
     const a = await canvasPicture(page);
-    await sleep(400);
-    const b = await canvasPicture(page);
     assert.ok(a.lit > a.total * 0.005, `only ${a.lit} of ${a.total} pixels differ from the background`);
-    assert.notEqual(a.hash, b.hash, "the picture did not change in 400 ms");
+    // Software WebGL draws as often as it can afford (10 fps at most): give it a few draws.
+    const b = await waitFor(async () => {
+      const b = await canvasPicture(page);
+      return b.hash !== a.hash && b;
+    }, 5_000, 100);
+    assert.ok(b, "the picture did not change in 5 s");
   });
 
   test("deemed and real collisions arrive with the frames", async () => {
@@ -87,20 +90,46 @@ describe("viewer at N = 500 under a sphere-test budget", { skip }, () => {
 
   test("the mouse at (0.2, 0.3) of the canvas is the server's fixation within 100 ms", async () => {
     const box = await page.locator("#scene").boundingBox();
-    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-    await sleep(300);
-    const t0 = performance.now();
-    await page.mouse.move(box.x + 0.2 * box.width, box.y + 0.3 * box.height);
-    const moved = performance.now() - t0;
-    const fix = await waitFor(async () => {
-      const s = await rpc.getStatus({});
-      const f = s.lastFixation;
-      return f && f.source === pb.FixationSource.GAZE && Math.abs(f.x - 0.2) < 0.01 && Math.abs(f.y - 0.3) < 0.01 && f;
-    }, 2_000, 2);
-    const ms = performance.now() - t0;
-    assert.ok(fix, "the server never reported the fixation at (0.2, 0.3)");
-    console.log(`# mouse to server fixation: ${ms.toFixed(1)} ms (the move itself returned after ${moved.toFixed(1)} ms; drawing costs ${(await stats(page)).drawMs.toFixed(1)} ms)`);
-    assert.ok(ms <= 100, `took ${ms.toFixed(1)} ms`);
+    const at = (x, y) => page.mouse.move(box.x + x * box.width, box.y + y * box.height);
+    // Three moves from elsewhere to (0.2, 0.3); timing on a shared machine is noisy, so the
+    // median of three is held to the bound, and every trial is printed.
+    // The server's report is its frame stream: the first frame whose fixation is the mouse.
+    const watching = new AbortController();
+    let seenAt = null;
+    const watcher = (async () => {
+      try {
+        for await (const f of rpc.watchFrames({ everyK: 1 }, { signal: watching.signal })) {
+          const x = f.fixation;
+          const there = x && x.source === pb.FixationSource.GAZE && Math.abs(x.x - 0.2) < 0.01 && Math.abs(x.y - 0.3) < 0.01;
+          if (there && seenAt === null) seenAt = performance.now();
+          if (!there) seenAt = null;
+        }
+      } catch (e) {
+        if (!watching.signal.aborted) throw e;
+      }
+    })();
+    const trials = [];
+    try {
+      for (const [x, y] of [[0.5, 0.5], [0.8, 0.7], [0.6, 0.2]]) {
+        await at(x, y);
+        assert.ok(await waitFor(() => seenAt === null, 2_000, 5), "the fixation left (0.2, 0.3)");
+        await sleep(300);
+        const t0 = performance.now();
+        await at(0.2, 0.3);
+        const at_ = await waitFor(() => seenAt, 2_000, 1);
+        assert.ok(at_, "the server never reported the fixation at (0.2, 0.3)");
+        trials.push(at_ - t0);
+      }
+    } finally {
+      watching.abort();
+      await watcher;
+    }
+    // GetStatus agrees with the frames.
+    const f = (await rpc.getStatus({})).lastFixation;
+    assert.ok(Math.abs(f.x - 0.2) < 0.01 && Math.abs(f.y - 0.3) < 0.01, `GetStatus says (${f.x}, ${f.y})`);
+    const median = [...trials].sort((a, b) => a - b)[1];
+    console.log(`# mouse to server fixation: ${trials.map((t) => t.toFixed(1)).join(", ")} ms (median ${median.toFixed(1)} ms)`);
+    assert.ok(median <= 100, `median ${median.toFixed(1)} ms`);
   });
 
   test("changing the scheduler in the page changes what GetStatus reports", async () => {
@@ -175,7 +204,9 @@ describe("viewer at N = 10,000", { skip }, () => {
     // The README's picture: the mouse left of centre, frames and plots running.
     const box = await page.locator("#scene").boundingBox();
     await page.mouse.move(box.x + 0.35 * box.width, box.y + 0.45 * box.height);
-    await sleep(2000);
+    await waitFor(() => page.evaluate(() => document.getElementById("readout").textContent.includes(") gaze")), 10_000, 100);
+    // Two draws after the fixation arrived (drawing paces itself on software WebGL).
+    await sleep(Math.min(8000, 200 + 4 * (await stats(page)).drawMs));
     mkdirSync(join(repo, "docs", "figures"), { recursive: true });
     await page.screenshot({ path: join(repo, "docs", "figures", "viewer.png") });
   });
