@@ -62,11 +62,19 @@ export async function freePort() {
   });
 }
 
+// Servers still running when the test process exits (a failed or interrupted run) go with it.
+const running = new Set();
+process.on("exit", () => {
+  for (const p of running) p.kill("SIGKILL");
+});
+
 /** Start foveal-server on `port` with `args`; resolves once it serves the page. */
 export async function startServer(port, args) {
   const proc = spawn(SERVER, ["--addr", `127.0.0.1:${port}`, "--log-level", "warn", ...args], {
     stdio: ["ignore", "inherit", "inherit"],
   });
+  running.add(proc);
+  proc.once("exit", () => running.delete(proc));
   const failed = new Promise((_, fail) => proc.once("error", (e) => fail(new Error(`cannot start ${SERVER}: ${e.message}`))));
   failed.catch(() => {});
   const url = `http://127.0.0.1:${port}/`;
