@@ -1,5 +1,5 @@
 // The mouse as the gaze: pointer positions over the scene go to PushGaze in small batches at the
-// pointer's rate, one request in flight at a time. While the pointer rests on the scene its
+// pointer's rate, at most two requests in flight (a move never waits behind a repeat). While the pointer rests on the scene its
 // position is re-sent every 100 ms, because the server treats gaze older than `gaze_max_age`
 // (0.5 s by default) as stale and falls back to the screen centre: a resting eye still looks.
 import { create } from "@bufbuild/protobuf";
@@ -24,7 +24,7 @@ export class MouseGaze {
   lastRoundTripMs = 0;
   lastPointerAt = 0;
   private pending: GazeSample[] = [];
-  private inFlight = false;
+  private inFlight = 0;
   private lastSent = 0;
 
   constructor(private client: FovealClient, private target: HTMLElement) {
@@ -56,7 +56,7 @@ export class MouseGaze {
   }
 
   private tick(): void {
-    if (this.enabled && this.pointer && this.pending.length === 0 && performance.now() - this.lastSent > REPEAT_MS) {
+    if (this.enabled && this.pointer && this.inFlight === 0 && this.pending.length === 0 && performance.now() - this.lastSent > REPEAT_MS) {
       this.sample();
     } else {
       void this.flush();
@@ -64,10 +64,12 @@ export class MouseGaze {
   }
 
   private async flush(): Promise<void> {
-    if (this.inFlight || this.pending.length === 0) return;
+    // Two lanes: the server keeps the sample it received last, and a repeat of the resting pointer
+    // that is still in flight must not hold back the move that follows it.
+    if (this.inFlight >= 2 || this.pending.length === 0) return;
     const samples = this.pending;
     this.pending = [];
-    this.inFlight = true;
+    this.inFlight++;
     this.lastSent = performance.now();
     try {
       const t0 = performance.now();
@@ -78,7 +80,7 @@ export class MouseGaze {
     } catch (e) {
       this.lastError = e instanceof Error ? e.message : String(e);
     } finally {
-      this.inFlight = false;
+      this.inFlight--;
     }
   }
 }
