@@ -22,6 +22,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     tonic_prost_build::configure()
         // Pose buffers are `bytes::Bytes`: cloning a frame for each subscriber shares them.
         .bytes(".foveal.v1.Poses")
+        .bytes(".foveal.v1.QuantisedPoses")
+        .bytes(".foveal.v1.Collisions")
         .build_client(true)
         .build_server(true)
         .compile_fds(fds)?;

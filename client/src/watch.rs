@@ -304,6 +304,7 @@ pub async fn watch<C: Write, S: Write>(
     let request = pb::WatchFramesRequest {
         every_k: options.every_k,
         include_poses: options.poses,
+        ..Default::default()
     };
     let mut stream = client
         .watch_frames(request)
@@ -404,6 +405,7 @@ mod tests {
             profile: Some(pb::PhaseProfile::default()),
             dropped_before: dropped,
             poses: None,
+            ..Default::default()
         }
     }
 

@@ -31,6 +31,7 @@ async fn frames(addr: &str, n: u64) -> Vec<pb::Frame> {
         .watch_frames(pb::WatchFramesRequest {
             every_k: 1,
             include_poses: false,
+            ..Default::default()
         })
         .await
         .expect("watch")

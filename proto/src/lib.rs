@@ -5,6 +5,8 @@
 //! # Layout
 //! - [`pb`]: generated message types, the `foveal_client::FovealClient` and the
 //!   `foveal_server::{Foveal, FovealServer}` pair.
+//! - [`quantise`]: packing of `QuantisedPoses` (16-bit positions, smallest-three quaternions) and
+//!   of `Collisions`, with the decoders a Rust client uses.
 //! - [`FILE_DESCRIPTOR_SET`]: the encoded `FileDescriptorSet` of the protocol, for gRPC
 //!   server reflection.
 //!
@@ -22,6 +24,8 @@
 pub mod pb {
     tonic::include_proto!("foveal.v1");
 }
+
+pub mod quantise;
 
 impl pb::Poses {
     /// Pack positions (relative to `origin`) and orientations (x, y, z, w) as little-endian f32.

@@ -99,6 +99,7 @@ async fn latency(
         .watch_frames(pb::WatchFramesRequest {
             every_k: 1,
             include_poses: poses,
+            ..Default::default()
         })
         .await?
         .into_inner();
@@ -219,6 +220,7 @@ async fn fanout(
             .watch_frames(pb::WatchFramesRequest {
                 every_k: 1,
                 include_poses: true,
+                ..Default::default()
             })
             .await?
             .into_inner();

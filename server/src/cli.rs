@@ -17,6 +17,15 @@ use foveal_engine::{
 
 use crate::config::ServerConfig;
 
+/// Bodies of the scene the server starts with. With [`DEFAULT_BUDGET`] the point of foveal shows at
+/// once: about a third of the candidate pairs are deemed each frame, so P is visible and moves with
+/// the gaze, while a frame's step stays well inside the 60 Hz period (docs/BENCHMARKS.md).
+pub const DEFAULT_BODIES: u32 = 5000;
+
+/// Budget the server starts with: sphere tests, so what a newcomer sees does not depend on the
+/// machine's speed.
+pub const DEFAULT_BUDGET: &str = "8000tests";
+
 /// Headless foveal server: runs the budgeted, gaze-scheduled collision loop and serves it over gRPC.
 #[derive(Debug, Clone, Parser)]
 #[command(name = "foveal-server", version, about)]
@@ -25,7 +34,7 @@ pub struct Cli {
     #[arg(long, env = "FOVEAL_ADDR", default_value = "127.0.0.1:50051")]
     pub addr: SocketAddr,
     /// Number of bodies.
-    #[arg(short = 'n', long, env = "FOVEAL_BODIES", default_value_t = 500)]
+    #[arg(short = 'n', long, env = "FOVEAL_BODIES", default_value_t = DEFAULT_BODIES)]
     pub bodies: u32,
     /// Seed of the scene generator.
     #[arg(long, env = "FOVEAL_SEED", default_value_t = 1)]
@@ -49,7 +58,7 @@ pub struct Cli {
     /// Per-frame narrow-phase budget: `exact`, `zero` (deem every pair), `<ms>ms` (wall clock,
     /// e.g. `2.5ms`), `<n>tests` (sphere tests, e.g. `20000tests`), or `<f>x` (fraction of the
     /// exact cost, e.g. `0.3x`).
-    #[arg(long, env = "FOVEAL_BUDGET", default_value = "exact")]
+    #[arg(long, env = "FOVEAL_BUDGET", default_value = DEFAULT_BUDGET)]
     pub budget: BudgetArg,
     /// Frames per second the loop runs at.
     #[arg(long, env = "FOVEAL_FRAME_RATE", default_value_t = 60.0)]
@@ -254,7 +263,11 @@ mod tests {
         let cli = Cli::try_parse_from(["foveal-server"]).expect("defaults parse");
         assert_eq!(cli.addr.to_string(), "127.0.0.1:50051");
         let c = cli.server_config().expect("valid");
-        assert_eq!(c.sim, SimConfig::default());
+        // The engine's defaults but for a scene and budget where the budget bites.
+        let mut expected = SimConfig::default();
+        expected.scene.bodies = DEFAULT_BODIES;
+        expected.budget = BudgetSpec::SphereTests(8000);
+        assert_eq!(c.sim, expected);
         assert_eq!(c.gaze_max_age, Duration::from_millis(500));
     }
 

@@ -305,6 +305,30 @@ pub fn poses(sim: &Simulation) -> pb::Poses {
     )
 }
 
+/// The current poses quantised for viewers (WatchFramesRequest.quantised_poses).
+pub fn quantised_poses(sim: &Simulation) -> pb::QuantisedPoses {
+    let w = sim.world();
+    let extent = (w.hi - w.lo).max_element();
+    pb::QuantisedPoses::pack(
+        vec3(w.lo),
+        extent,
+        w.position.iter().map(|p| (*p - w.lo).as_vec3().to_array()),
+        w.orientation.iter().map(|q| q.as_quat().to_array()),
+    )
+}
+
+/// The last frame's collision list: pairs resolved as colliding and pairs deemed colliding.
+pub fn collisions(sim: &Simulation) -> pb::Collisions {
+    use foveal_engine::narrow_phase::PairStatus;
+    let of = |status: PairStatus| {
+        sim.pairs()
+            .iter()
+            .filter(move |p| p.status == status)
+            .map(|p| (p.a, p.b))
+    };
+    pb::Collisions::pack(of(PairStatus::Colliding), of(PairStatus::Deemed))
+}
+
 /// The protocol fixation of a frame.
 pub fn fixation_to_pb(f: &ResolvedFixation) -> pb::Fixation {
     pb::Fixation {
@@ -319,7 +343,7 @@ fn ns_to_s(ns: u64) -> f64 {
     ns as f64 * 1e-9
 }
 
-/// A frame without poses and with `dropped_before` 0 (both are per subscriber).
+/// A frame without poses or collisions and with `dropped_before` 0 (all are per subscriber).
 pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &ResolvedFixation) -> pb::Frame {
     let p = &r.profile;
     pb::Frame {
@@ -352,6 +376,8 @@ pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &ResolvedFixation) -> 
         }),
         dropped_before: 0,
         poses: None,
+        quantised_poses: None,
+        collisions: None,
     }
 }
 

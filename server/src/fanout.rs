@@ -22,6 +22,32 @@ pub struct FrameMsg {
     pub frame: pb::Frame,
     /// The frame's poses, present while at least one subscriber wants poses.
     pub poses: Option<Arc<pb::Poses>>,
+    /// The frame's quantised poses, present while at least one subscriber wants them.
+    pub quantised_poses: Option<Arc<pb::QuantisedPoses>>,
+    /// The frame's collision list, present while at least one subscriber wants it.
+    pub collisions: Option<Arc<pb::Collisions>>,
+}
+
+/// What a subscriber wants besides the frame's metrics.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Wants {
+    /// f32 poses (`Frame.poses`).
+    pub poses: bool,
+    /// Quantised poses (`Frame.quantised_poses`).
+    pub quantised_poses: bool,
+    /// The collision list (`Frame.collisions`).
+    pub collisions: bool,
+}
+
+impl Wants {
+    /// From a WatchFrames request: quantised poses replace f32 poses when both are asked for.
+    pub fn of(req: &pb::WatchFramesRequest) -> Self {
+        Self {
+            poses: req.include_poses && !req.quantised_poses,
+            quantised_poses: req.include_poses && req.quantised_poses,
+            collisions: req.include_collisions,
+        }
+    }
 }
 
 /// Broadcast ring plus subscriber counts.
@@ -30,6 +56,8 @@ pub struct Fanout {
     tx: broadcast::Sender<Arc<FrameMsg>>,
     subscribers: AtomicU32,
     pose_subscribers: AtomicU32,
+    quantised_subscribers: AtomicU32,
+    collision_subscribers: AtomicU32,
 }
 
 impl Fanout {
@@ -40,6 +68,8 @@ impl Fanout {
             tx,
             subscribers: AtomicU32::new(0),
             pose_subscribers: AtomicU32::new(0),
+            quantised_subscribers: AtomicU32::new(0),
+            collision_subscribers: AtomicU32::new(0),
         }
     }
 
@@ -59,19 +89,50 @@ impl Fanout {
         self.pose_subscribers.load(Ordering::Relaxed) > 0
     }
 
+    /// Whether any subscriber wants quantised poses.
+    pub fn wants_quantised_poses(&self) -> bool {
+        self.quantised_subscribers.load(Ordering::Relaxed) > 0
+    }
+
+    /// Whether any subscriber wants the collision list.
+    pub fn wants_collisions(&self) -> bool {
+        self.collision_subscribers.load(Ordering::Relaxed) > 0
+    }
+
     /// A new subscription receiving frames published from now on.
     pub fn subscribe(self: &Arc<Self>, every_k: u32, include_poses: bool) -> Subscription {
+        self.subscribe_to(
+            every_k,
+            Wants {
+                poses: include_poses,
+                ..Wants::default()
+            },
+        )
+    }
+
+    /// A new subscription receiving frames published from now on, with what `wants` asks for.
+    pub fn subscribe_to(self: &Arc<Self>, every_k: u32, wants: Wants) -> Subscription {
         self.subscribers.fetch_add(1, Ordering::Relaxed);
-        if include_poses {
-            self.pose_subscribers.fetch_add(1, Ordering::Relaxed);
+        for (wanted, count) in self.counters(wants) {
+            if wanted {
+                count.fetch_add(1, Ordering::Relaxed);
+            }
         }
         Subscription {
             rx: self.tx.subscribe(),
             every_k: u64::from(every_k.max(1)),
-            include_poses,
+            wants,
             last_sent: None,
             fanout: Arc::clone(self),
         }
+    }
+
+    fn counters(&self, wants: Wants) -> [(bool, &AtomicU32); 3] {
+        [
+            (wants.poses, &self.pose_subscribers),
+            (wants.quantised_poses, &self.quantised_subscribers),
+            (wants.collisions, &self.collision_subscribers),
+        ]
     }
 }
 
@@ -80,7 +141,7 @@ impl Fanout {
 pub struct Subscription {
     rx: broadcast::Receiver<Arc<FrameMsg>>,
     every_k: u64,
-    include_poses: bool,
+    wants: Wants,
     last_sent: Option<u64>,
     fanout: Arc<Fanout>,
 }
@@ -88,8 +149,10 @@ pub struct Subscription {
 impl Drop for Subscription {
     fn drop(&mut self) {
         self.fanout.subscribers.fetch_sub(1, Ordering::Relaxed);
-        if self.include_poses {
-            self.fanout.pose_subscribers.fetch_sub(1, Ordering::Relaxed);
+        for (wanted, count) in self.fanout.counters(self.wants) {
+            if wanted {
+                count.fetch_sub(1, Ordering::Relaxed);
+            }
         }
     }
 }
@@ -109,17 +172,27 @@ impl Subscription {
             if index % self.every_k != 0 {
                 continue;
             }
-            // Only the first frame or so after subscribing can lack poses (published before the
+            // Only the first frame or so after subscribing can lack poses or collisions (published before the
             // loop saw this subscriber); it is skipped rather than sent incomplete.
-            if self.include_poses && msg.poses.is_none() {
+            let w = self.wants;
+            if (w.poses && msg.poses.is_none())
+                || (w.quantised_poses && msg.quantised_poses.is_none())
+                || (w.collisions && msg.collisions.is_none())
+            {
                 continue;
             }
             let mut frame = msg.frame.clone();
             frame.dropped_before = self.last_sent.map_or(0, |last| {
                 (index / self.every_k).saturating_sub(last / self.every_k + 1)
             });
-            if self.include_poses {
+            if w.poses {
                 frame.poses = msg.poses.as_deref().cloned();
+            }
+            if w.quantised_poses {
+                frame.quantised_poses = msg.quantised_poses.as_deref().cloned();
+            }
+            if w.collisions {
+                frame.collisions = msg.collisions.as_deref().cloned();
             }
             self.last_sent = Some(index);
             return Some(frame);
@@ -168,6 +241,8 @@ mod tests {
                 ..Default::default()
             },
             poses: poses.then(|| Arc::new(pb::Poses::default())),
+            quantised_poses: None,
+            collisions: None,
         }
     }
 

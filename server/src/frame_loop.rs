@@ -176,10 +176,23 @@ fn run(
             .fanout
             .wants_poses()
             .then(|| Arc::new(convert::poses(&sim)));
+        let quantised_poses = shared
+            .fanout
+            .wants_quantised_poses()
+            .then(|| Arc::new(convert::quantised_poses(&sim)));
+        let collisions = shared
+            .fanout
+            .wants_collisions()
+            .then(|| Arc::new(convert::collisions(&sim)));
         shared
             .metrics
             .frame_done(convert::fixation_to_pb(&fixation));
-        shared.fanout.publish(FrameMsg { frame, poses });
+        shared.fanout.publish(FrameMsg {
+            frame,
+            poses,
+            quantised_poses,
+            collisions,
+        });
 
         let end = Instant::now();
         deadline += period;

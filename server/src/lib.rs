@@ -17,6 +17,7 @@
 //!   Configure's merge rule.
 //! - [`state`], [`metrics`], [`summary`], [`shutdown`]: shared state, counters, the per-second
 //!   summary line, the shutdown signal.
+//! - [`web`]: the browser viewer on the gRPC port: grpc-web and the embedded page.
 //!
 //! Data flow: gaze → [`gaze`] → [`fixation_cell`] → [`frame_loop`] (engine step) → [`fanout`] →
 //! subscribers. Protocol semantics are documented in `docs/PROTOCOL.md`.
@@ -45,6 +46,7 @@ pub mod shutdown;
 pub mod state;
 pub mod summary;
 pub mod telemetry;
+pub mod web;
 
 pub use config::ServerConfig;
 pub use error::ServerError;
@@ -108,7 +110,10 @@ pub async fn run(
         })
     });
     let mut server_stop = stop.clone();
+    // HTTP/1.1, grpc-web and the embedded page: the browser viewer on this port (see `web`).
     let server = tonic::transport::Server::builder()
+        .accept_http1(true)
+        .layer(web::ViewerLayer)
         .add_service(health_service)
         .add_service(reflection_v1)
         .add_service(reflection_v1alpha)

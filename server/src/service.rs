@@ -131,7 +131,10 @@ impl pb::foveal_server::Foveal for FovealService {
             return Err(Status::unavailable("server is shutting down"));
         }
         let req = request.into_inner();
-        let sub = self.shared.fanout.subscribe(req.every_k, req.include_poses);
+        let sub = self
+            .shared
+            .fanout
+            .subscribe_to(req.every_k, fanout::Wants::of(&req));
         Ok(Response::new(fanout::into_stream(
             sub,
             self.shutdown.clone(),

@@ -11,6 +11,7 @@
 //! - `tests/scheduling.rs`: gaze-steered scheduling under a tight budget; the wall-clock budget.
 //! - `tests/robustness.rs`: vanishing clients, many subscribers, shutdown.
 //! - `tests/services.rs`: health, reflection, GetScene.
+//! - `tests/viewer.rs`: quantised poses, collision lists, the page and grpc-web on the gRPC port.
 
 // Test helpers panic with a message on setup failures; that is the failure report.
 #![allow(clippy::missing_panics_doc)]
@@ -139,6 +140,7 @@ pub async fn watch(
         .watch_frames(pb::WatchFramesRequest {
             every_k,
             include_poses,
+            ..Default::default()
         })
         .await
         .expect("WatchFrames accepted")

@@ -1,0 +1,361 @@
+// foveal viewer: the scene from GetScene, frames from WatchFrames (quantised poses and the
+// collision list), the mouse as gaze through PushGaze, controls through Configure, and live plots.
+// It reconnects by itself when the server goes away and comes back.
+import { fromBinary, toBinary, type MessageInitShape } from "@bufbuild/protobuf";
+import { Code, ConnectError } from "@connectrpc/connect";
+import {
+  FixationSource,
+  FrameSchema,
+  SceneConfigSchema,
+  type Frame,
+  type SceneConfig,
+  type SceneDescription,
+} from "./gen/foveal/v1/foveal_pb";
+import { SCHEDULERS, formatBudget, formatModel, parseBudget, parseModel, schedulerName } from "./config";
+import { MouseGaze } from "./gaze";
+import { Overlay, fovealRadius } from "./overlay";
+import { Plots } from "./plots";
+import { applyPoses, applyQuantisedPoses, forEachPair } from "./poses";
+import { connect } from "./rpc";
+import { COLOURS, SceneView } from "./scene";
+
+function el<T extends HTMLElement>(id: string): T {
+  const e = document.getElementById(id);
+  if (!e) throw new Error(`page element #${id} is missing`);
+  return e as T;
+}
+
+/** What the page measured, for the status panel and for the browser tests. */
+const stats = {
+  connected: false,
+  lastError: "",
+  framesReceived: 0,
+  framesApplied: 0,
+  lastIndex: -1,
+  bodies: 0,
+  /** Pose decode + instance matrix and colour update per applied frame, ms (last 300). */
+  updateMs: [] as number[],
+  /** Protobuf parse of a whole Frame message, ms, timed on every 10th frame (last 60). */
+  parseMs: [] as number[],
+  frameBytes: 0,
+  /** Smoothed cost of drawing the scene once, ms. */
+  drawMs: 0,
+};
+
+const client = connect(window.location.origin);
+const view = new SceneView(el<HTMLCanvasElement>("scene"));
+const overlay = new Overlay(el<HTMLCanvasElement>("overlay"));
+const plots = new Plots(el("plots"), 360);
+const gaze = new MouseGaze(client, el("scene"));
+
+let scene: SceneDescription | null = null;
+let region: { rx: number; ry: number } | null = null;
+let lastFrame: Frame | null = null;
+let paused = false;
+let restart: AbortController | null = null;
+const arrivals: number[] = [];
+
+(window as unknown as { foveal: unknown }).foveal = { stats, view, gaze };
+
+// ------------------------------------------------------------------------------------ layout
+
+function layout(): void {
+  const box = el("view-box");
+  const aspect = scene?.camera?.aspect || 1.6;
+  const w = Math.max(100, Math.min(box.clientWidth, box.clientHeight * aspect));
+  const h = w / aspect;
+  for (const id of ["scene", "overlay"]) {
+    const c = el<HTMLCanvasElement>(id);
+    c.style.width = `${w}px`;
+    c.style.height = `${h}px`;
+  }
+  view.resize(w, h);
+  overlay.resize(Math.round(w), Math.round(h));
+}
+window.addEventListener("resize", layout);
+
+// ------------------------------------------------------------------------------------ status
+
+function setStatus(text: string, kind: "ok" | "error" | "info"): void {
+  const s = el("status");
+  s.textContent = text;
+  s.className = kind;
+}
+
+function describe(e: unknown): string {
+  if (e instanceof ConnectError) return e.code === Code.Unknown ? e.rawMessage : `${Code[e.code]}: ${e.rawMessage}`;
+  return e instanceof Error ? e.message : String(e);
+}
+
+// ------------------------------------------------------------------------------------ frames
+
+function onFrame(f: Frame): void {
+  stats.framesReceived++;
+  const now = performance.now();
+  arrivals.push(now);
+  while (arrivals.length && arrivals[0] < now - 1000) arrivals.shift();
+  if (paused) return;
+
+  const t0 = performance.now();
+  const matrices = view.matrices();
+  let bodies = 0;
+  if (f.quantisedPoses) bodies = applyQuantisedPoses(f.quantisedPoses, matrices);
+  else if (f.poses) bodies = applyPoses(f.poses, matrices);
+  view.posesWritten(bodies);
+  const c = f.collisions;
+  view.colour((set) => {
+    if (!c) return;
+    forEachPair(c.real, (a, b) => (set(a, COLOURS.real), set(b, COLOURS.real)));
+    forEachPair(c.deemed, (a, b) => (set(a, COLOURS.deemed), set(b, COLOURS.deemed)));
+  });
+  const t1 = performance.now();
+  push(stats.updateMs, t1 - t0, 300);
+  if (stats.framesReceived % 10 === 0) {
+    const bytes = toBinary(FrameSchema, f);
+    const p0 = performance.now();
+    fromBinary(FrameSchema, bytes);
+    push(stats.parseMs, performance.now() - p0, 60);
+    stats.frameBytes = bytes.length;
+  }
+  stats.framesApplied++;
+  stats.lastIndex = Number(f.index);
+  stats.bodies = bodies;
+  lastFrame = f;
+
+  const m = f.metrics;
+  if (m) {
+    const budget = scene?.config?.budget?.kind;
+    let use: number | null = null;
+    if (budget?.case === "sphereTests" && budget.value > 0n) use = Number(m.sphereTests) / Number(budget.value);
+    else if (budget?.case === "wallMs" && budget.value > 0) use = (1000 * m.collisionTimeS) / budget.value;
+    else if (budget?.case === "exact") use = 0;
+    const candidates = Number(m.candidatePairs);
+    plots.push({
+      t: f.simTimeS,
+      collisionMs: 1000 * m.collisionTimeS,
+      geometric: m.geometricInaccuracy,
+      perceived: m.perceivedInaccuracy,
+      truePerceived: m.audit ? m.audit.truePerceivedInaccuracy : null,
+      budgetUse: use,
+      deemedShare: candidates ? Number(m.deemedAtInterruption) / candidates : 0,
+      fps: arrivals.length,
+    });
+  }
+}
+
+function push(a: number[], v: number, keep: number): void {
+  a.push(v);
+  if (a.length > keep) a.shift();
+}
+
+function median(a: number[]): number {
+  if (!a.length) return NaN;
+  const s = [...a].sort((x, y) => x - y);
+  return s[Math.floor(s.length / 2)];
+}
+
+// ------------------------------------------------------------------------------------ session
+
+async function session(): Promise<void> {
+  const d = await client.getScene({});
+  scene = d;
+  view.load(d);
+  const cfg = d.config;
+  region = cfg?.display ? fovealRadius(cfg.display, cfg.eccentricityThresholdDeg) : null;
+  fillControls(cfg);
+  plots.clear();
+  layout();
+  stats.connected = true;
+  stats.lastError = "";
+  setStatus(`connected to ${window.location.host}: ${cfg?.bodies ?? 0} bodies${view.software ? " (software WebGL: every 6th frame, drawn at 10 fps)" : ""}`, "ok");
+  restart = new AbortController();
+  // Only the frames it can draw: with software WebGL (10 draws a second) every 6th of 60 Hz, so
+  // that 10,000 bodies' poses at 60 Hz do not crowd the gaze out of the page's main thread.
+  const frames = client.watchFrames(
+    { everyK: view.software ? 6 : 1, includePoses: true, quantisedPoses: true, includeCollisions: true },
+    { signal: restart.signal },
+  );
+  try {
+    for await (const f of frames) onFrame(f);
+  } catch (e) {
+    if (restart.signal.aborted) return;
+    throw e;
+  }
+  if (!restart.signal.aborted) throw new Error("the server ended the frame stream (shutting down?)");
+}
+
+async function run(): Promise<void> {
+  let backoff = 500;
+  for (;;) {
+    try {
+      await session();
+      backoff = 500;
+    } catch (e) {
+      stats.connected = false;
+      stats.lastError = describe(e);
+      const wait = backoff;
+      setStatus(`cannot reach foveal-server at ${window.location.host}: ${stats.lastError}. Retrying in ${(wait / 1000).toFixed(1)} s…`, "error");
+      await new Promise((r) => setTimeout(r, wait));
+      backoff = Math.min(5000, backoff * 2);
+    }
+  }
+}
+
+// ------------------------------------------------------------------------------------ controls
+
+const schedulerSelect = el<HTMLSelectElement>("scheduler");
+for (const [name] of SCHEDULERS) schedulerSelect.add(new Option(name, name));
+
+/** Show the configuration in force, except in the control the user is editing. */
+function fillControls(cfg: SceneConfig | undefined): void {
+  if (!cfg) return;
+  const set = (id: string, v: string) => {
+    const e = el<HTMLInputElement | HTMLSelectElement>(id);
+    if (document.activeElement !== e) e.value = v;
+  };
+  set("scheduler", schedulerName(cfg.scheduler));
+  set("budget", formatBudget(cfg.budget));
+  set("bodies", String(cfg.bodies));
+  set("measure-model", formatModel(cfg.measureModel));
+  set("schedule-model", formatModel(cfg.scheduleModel));
+  el<HTMLInputElement>("audit").checked = cfg.audit;
+}
+
+type ConfigChange = Exclude<MessageInitShape<typeof SceneConfigSchema>, SceneConfig>;
+
+async function configure(change: (c: ConfigChange) => void): Promise<void> {
+  const out = el("config-error");
+  const config: ConfigChange = { audit: el<HTMLInputElement>("audit").checked };
+  try {
+    change(config);
+  } catch (e) {
+    out.textContent = describe(e);
+    return;
+  }
+  out.textContent = "applying…";
+  try {
+    const r = await client.configure({ config });
+    out.textContent = "";
+    el("config-ok").textContent = `applied from frame ${r.firstFrameIndex}`;
+    restart?.abort(); // the session restarts on the new scene (GetScene, new mesh)
+  } catch (e) {
+    el("config-ok").textContent = "";
+    out.textContent = describe(e);
+  }
+}
+
+schedulerSelect.addEventListener("change", () =>
+  configure((c) => {
+    const s = SCHEDULERS.find(([n]) => n === schedulerSelect.value);
+    if (!s) throw new Error(`unknown scheduler ${schedulerSelect.value}`);
+    c.scheduler = s[1];
+  }),
+);
+el("budget").addEventListener("change", (e) =>
+  configure((c) => (c.budget = parseBudget((e.target as HTMLInputElement).value))),
+);
+el("bodies").addEventListener("change", (e) =>
+  configure((c) => {
+    const v = Number((e.target as HTMLInputElement).value);
+    if (!Number.isInteger(v) || v < 0) throw new Error(`bodies: "${(e.target as HTMLInputElement).value}" is not a whole number`);
+    c.bodies = v;
+  }),
+);
+el("measure-model").addEventListener("change", (e) =>
+  configure((c) => (c.measureModel = parseModel((e.target as HTMLInputElement).value))),
+);
+el("schedule-model").addEventListener("change", (e) =>
+  configure((c) => (c.scheduleModel = parseModel((e.target as HTMLInputElement).value))),
+);
+el("audit").addEventListener("change", () => configure(() => {}));
+el<HTMLInputElement>("mouse-gaze").addEventListener("change", (e) => (gaze.enabled = (e.target as HTMLInputElement).checked));
+
+function togglePause(): void {
+  paused = !paused;
+  el("pause").textContent = paused ? "resume" : "pause";
+}
+el("pause").addEventListener("click", togglePause);
+el("reset").addEventListener("click", () => view.resetView());
+window.addEventListener("keydown", (e) => {
+  if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+  if (e.key === "p" || e.key === " ") {
+    togglePause();
+    e.preventDefault();
+  } else if (e.key === "r") view.resetView();
+});
+
+// ------------------------------------------------------------------------------------ drawing
+
+function text(id: string, s: string): void {
+  el(id).textContent = s;
+}
+
+function drawReadout(): void {
+  const f = lastFrame, m = f?.metrics, fix = f?.fixation;
+  const src = fix ? ({ [FixationSource.GAZE]: "gaze", [FixationSource.FALLBACK_NO_GAZE]: "no gaze: centre", [FixationSource.FALLBACK_STALE]: "stale: centre" } as Record<number, string>)[fix.source] ?? "?" : "-";
+  text(
+    "readout",
+    m
+      ? [
+          `frame ${f?.index}  bodies ${stats.bodies}  ${arrivals.length} fps`,
+          `pairs ${m.candidatePairs}  real ${m.realCollisions}  deemed ${m.deemedAtInterruption}`,
+          `T ${(1000 * m.collisionTimeS).toFixed(2)} ms  tests ${m.sphereTests}${m.budgetExhausted ? " (budget ran out)" : ""}`,
+          `Δ ${m.geometricInaccuracy.toFixed(3)}  P ${m.perceivedInaccuracy.toFixed(3)}${m.audit ? `  true P ${m.audit.truePerceivedInaccuracy.toFixed(3)}  false positives ${m.audit.trueFalsePositives}` : ""}`,
+          `fixation (${fix?.x.toFixed(3)}, ${fix?.y.toFixed(3)}) ${src}`,
+          `decode+update ${median(stats.updateMs).toFixed(2)} ms  parse ${median(stats.parseMs).toFixed(2)} ms  ${(stats.frameBytes / 1024).toFixed(0)} KiB/frame`,
+          `gaze sent ${gaze.accepted}${gaze.lastError ? `  (${gaze.lastError})` : ""}`,
+        ].join("\n")
+      : "waiting for frames…",
+  );
+  el("orbit-note").hidden = !view.orbited();
+}
+
+// Drawing is paced by what it costs: where WebGL runs on the CPU (no GPU, as in headless
+// browsers), presenting each drawn frame blocks the page's main thread for tens of milliseconds,
+// and drawing at the display's rate would leave no time for input (the mouse is the gaze) or for
+// the frame stream. There the scene is drawn at most 10 times a second (and at least twice its own
+// cost apart); with a GPU neither limit bites.
+// What a draw costs is measured as the delay it causes: the time from the draw to the next
+// animation callback beyond one display period (presenting happens after the script returns).
+const MIN_DRAW_INTERVAL_MS = view.software ? 100 : 0;
+let lastPlot = 0;
+let lastDraw = 0;
+let drawCost = 0;
+let lastTick = 0;
+let drewLastTick = false;
+function animate(t: number): void {
+  requestAnimationFrame(animate);
+  const gap = t - lastTick;
+  if (drewLastTick && lastTick > 0) {
+    const cost = Math.max(0, gap - 1000 / 60);
+    drawCost = 0.7 * drawCost + 0.3 * 2 * cost;
+    stats.drawMs = drawCost / 2;
+  }
+  lastTick = t;
+  drewLastTick = false;
+  if (t - lastDraw >= Math.max(drawCost, MIN_DRAW_INTERVAL_MS)) {
+    view.render();
+    lastDraw = t;
+    drewLastTick = true;
+  }
+  overlay.draw(lastFrame?.fixation, region, gaze.enabled ? gaze.pointer : null);
+  if (t - lastPlot > 100) {
+    lastPlot = t;
+    if (!paused) plots.redraw();
+    drawReadout();
+  }
+}
+
+async function pollStatus(): Promise<void> {
+  try {
+    const s = await client.getStatus({});
+    text("server", `server: ${s.fps.toFixed(1)} fps  ${schedulerName(s.config?.scheduler)}  ${formatBudget(s.config?.budget)}  gaze ${s.gazeRateHz.toFixed(0)} Hz  ${s.subscribers} watching`);
+  } catch {
+    text("server", "server: unreachable");
+  }
+}
+
+layout();
+requestAnimationFrame(animate);
+setInterval(() => void pollStatus(), 1000);
+void run();
