@@ -8,8 +8,9 @@
 //! # Layout
 //! - [`connect`], [`endpoint`], [`ClientError`]: one way to reach a server, with a short connect
 //!   timeout so that a missing server fails fast instead of hanging a script.
-//! - [`gaze`]: pure parsers and generators of [`gaze::GazeSample`]s (CSV, EyeLink ASC, Gazepoint
-//!   Open Gaze, scripted gaze).
+//! - [`gaze`]: the `foveal-gaze` crate, re-exported: pure parsers and generators of
+//!   [`gaze::GazeSample`]s (CSV, EyeLink ASC, Gazepoint Open Gaze, scripted gaze), validation,
+//!   filters and fixation detection.
 //! - [`pacer`]: maps sample timestamps to wall-clock deadlines for real-time or N× replay.
 //! - [`sender`]: [`sender::GazeSender`], one interface over the two gaze rpcs (client streaming
 //!   `StreamGaze`, unary batched `PushGaze`) that returns one [`sender::SendSummary`].
@@ -27,7 +28,7 @@ use thiserror::Error;
 use tonic::transport::{Channel, Endpoint};
 
 pub mod bridge;
-pub mod gaze;
+pub use foveal_gaze as gaze;
 pub mod health;
 pub mod pacer;
 pub mod sender;

@@ -17,7 +17,7 @@ const MISSING: usize = 710;
 
 fn data_path(extension: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../shared/data/gaze")
+        .join("../../../shared/data/gaze")
         .join(format!("{STEM}.{extension}"))
 }
 

@@ -1,4 +1,9 @@
-//! Gaze input: parsers for eye-tracker recordings and live protocols, and scripted generators.
+//! # foveal-gaze
+//!
+//! The one home of gaze in foveal: the sample type, every parser of recordings and tracker
+//! protocols, the validation the server applies, online filtering and fixation detection, the
+//! seeded generator and the scripted viewer. The client, the server, the study and the fuzz
+//! targets all use this crate, so a rule (or a threshold) lives in one place.
 //!
 //! Everything here is pure and synchronous: parsers take lines (or any [`BufRead`]) and give
 //! [`GazeSample`]s; networking and timing live with the callers.
@@ -9,12 +14,16 @@
 //!   conversion.
 //! - [`ParseError`]: the one error type of every parser; each error names its 1-based line
 //!   number and, where there is one, the field.
-//! - [`csv`]: CSV recordings, in screen pixels (`t_s,xpos,ypos,ps`) or normalised
-//!   (`t_s,x,y[,validity][,fixation]`), and a writer for the normalised form.
-//! - [`asc`]: EyeLink ASC files (samples, `SFIX`/`EFIX` fixation events, display coordinates).
+//! - [`csv`]: CSV recordings, in screen pixels (`t_s,xpos,ypos,ps`, or binocular
+//!   `xpos_left,xpos_right,...`) or normalised (`t_s,x,y[,validity][,fixation]`), and a writer.
+//! - [`asc`]: EyeLink ASC files, monocular and binocular (samples, `SFIX`/`EFIX` events,
+//!   display coordinates).
 //! - [`opengaze`]: the Gazepoint Open Gaze API (XML lines over TCP): handshake commands and a
 //!   record parser.
-//! - [`script`]: deterministic scripted gaze: fixed point, circle, random saccades.
+//! - [`validate`]: the rules a sample must pass before it can steer the scheduler, including
+//!   the limit on timestamp jumps.
+//! - [`rng`], [`viewer`]: the one seeded generator and the one scripted viewer.
+//! - [`script`]: deterministic scripted gaze at a rate: fixed point, circle, the viewer's saccades.
 
 use std::io::{self, BufRead};
 
@@ -23,7 +32,10 @@ use thiserror::Error;
 pub mod asc;
 pub mod csv;
 pub mod opengaze;
+pub mod rng;
 pub mod script;
+pub mod validate;
+pub mod viewer;
 
 #[cfg(test)]
 mod recording_tests;
@@ -101,56 +113,6 @@ impl GazeSample {
     #[must_use]
     pub fn with_fixation(self, fixation: Option<bool>) -> Self {
         Self { fixation, ..self }
-    }
-}
-
-impl From<Eye> for foveal_proto::pb::Eye {
-    fn from(eye: Eye) -> Self {
-        match eye {
-            Eye::Unspecified => Self::Unspecified,
-            Eye::Left => Self::Left,
-            Eye::Right => Self::Right,
-            Eye::Binocular => Self::Binocular,
-        }
-    }
-}
-
-impl From<foveal_proto::pb::Eye> for Eye {
-    fn from(eye: foveal_proto::pb::Eye) -> Self {
-        match eye {
-            foveal_proto::pb::Eye::Unspecified => Self::Unspecified,
-            foveal_proto::pb::Eye::Left => Self::Left,
-            foveal_proto::pb::Eye::Right => Self::Right,
-            foveal_proto::pb::Eye::Binocular => Self::Binocular,
-        }
-    }
-}
-
-impl From<GazeSample> for foveal_proto::pb::GazeSample {
-    fn from(s: GazeSample) -> Self {
-        Self {
-            tracker_time_s: s.t_s,
-            x: s.x,
-            y: s.y,
-            validity: s.validity,
-            eye: foveal_proto::pb::Eye::from(s.eye) as i32,
-            fixation: s.fixation,
-        }
-    }
-}
-
-impl From<&foveal_proto::pb::GazeSample> for GazeSample {
-    /// Unknown eye values become [`Eye::Unspecified`].
-    fn from(s: &foveal_proto::pb::GazeSample) -> Self {
-        let eye = foveal_proto::pb::Eye::try_from(s.eye).map_or(Eye::Unspecified, Eye::from);
-        Self {
-            t_s: s.tracker_time_s,
-            x: s.x,
-            y: s.y,
-            validity: s.validity,
-            eye,
-            fixation: s.fixation,
-        }
     }
 }
 
@@ -438,28 +400,6 @@ mod tests {
         assert!(ScreenPx::new(f64::NAN, 1080.0).is_none());
         assert!(ScreenPx::new(f64::INFINITY, 1080.0).is_none());
         assert!(ScreenPx::from_corners(10.0, 0.0, 5.0, 100.0).is_none());
-    }
-
-    #[test]
-    fn samples_convert_to_and_from_the_protocol() {
-        let sample = GazeSample {
-            t_s: 12.5,
-            x: 0.25,
-            y: 0.75,
-            validity: 0.5,
-            eye: Eye::Right,
-            fixation: Some(false),
-        };
-        let pb = foveal_proto::pb::GazeSample::from(sample);
-        assert_eq!(pb.tracker_time_s, 12.5);
-        assert_eq!(pb.eye, foveal_proto::pb::Eye::Right as i32);
-        assert_eq!(pb.fixation, Some(false));
-        assert_eq!(GazeSample::from(&pb), sample);
-        for eye in [Eye::Unspecified, Eye::Left, Eye::Right, Eye::Binocular] {
-            assert_eq!(Eye::from(foveal_proto::pb::Eye::from(eye)), eye);
-        }
-        let unknown = foveal_proto::pb::GazeSample { eye: 99, ..pb };
-        assert_eq!(GazeSample::from(&unknown).eye, Eye::Unspecified);
     }
 
     #[test]

@@ -176,6 +176,11 @@ impl<R: BufRead> CsvGazeReader<R> {
     pub fn screen(&self) -> Option<ScreenPx> {
         self.screen_given.or(self.screen_found)
     }
+
+    /// The 1-based number of the line read last (that of the last sample or error given).
+    pub fn line(&self) -> usize {
+        self.lines.line
+    }
 }
 
 /// Parses one data line under `columns`; `screen` converts pixels, `eye` tags the sample.
