@@ -116,6 +116,66 @@ impl GazeSample {
     }
 }
 
+/// One eye's reading at one instant: normalised (x, y) and validity, or `None` when the eye was
+/// not tracked (blink, track loss).
+pub type EyeReading = Option<(f64, f64, f32)>;
+
+/// How a binocular recording becomes samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Binocular {
+    /// One [`Eye::Binocular`] sample: the mean of the valid eyes (the one valid eye alone when the
+    /// other is missing), missing when neither is valid. The usual choice: averaging halves the
+    /// variance of uncorrelated noise, and a one-eyed blink does not lose the sample.
+    #[default]
+    Mean,
+    /// One [`Eye::Left`] sample: the left eye only.
+    Left,
+    /// One [`Eye::Right`] sample: the right eye only.
+    Right,
+    /// Two samples per instant, left then right, each tagged with its eye: the receiver combines
+    /// them (the server does, online).
+    Both,
+}
+
+impl Binocular {
+    /// The sample(s) of one binocular instant: the first always, the second only for
+    /// [`Binocular::Both`]. `fixation` is the source's flag, copied to each.
+    #[must_use]
+    pub fn samples(
+        self,
+        t_s: f64,
+        left: EyeReading,
+        right: EyeReading,
+        fixation: Option<bool>,
+    ) -> (GazeSample, Option<GazeSample>) {
+        let one = |reading: EyeReading, eye| match reading {
+            Some((x, y, validity)) => GazeSample {
+                t_s,
+                x,
+                y,
+                validity,
+                eye,
+                fixation,
+            },
+            None => GazeSample::missing(t_s, eye).with_fixation(fixation),
+        };
+        match self {
+            Self::Mean => {
+                let mean = match (left, right) {
+                    (Some((xl, yl, vl)), Some((xr, yr, vr))) => {
+                        Some(((xl + xr) / 2.0, (yl + yr) / 2.0, f32::midpoint(vl, vr)))
+                    }
+                    (one, None) | (None, one) => one,
+                };
+                (one(mean, Eye::Binocular), None)
+            }
+            Self::Left => (one(left, Eye::Left), None),
+            Self::Right => (one(right, Eye::Right), None),
+            Self::Both => (one(left, Eye::Left), Some(one(right, Eye::Right))),
+        }
+    }
+}
+
 /// Screen size in pixels, for converting pixel gaze to normalised coordinates.
 ///
 /// `origin_x`/`origin_y` is the pixel coordinate of the top-left corner (EyeLink's
