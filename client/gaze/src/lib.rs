@@ -22,6 +22,10 @@
 //!   record parser.
 //! - [`validate`]: the rules a sample must pass before it can steer the scheduler, including
 //!   the limit on timestamp jumps.
+//! - [`geometry`]: normalised screen points as gaze directions in degrees of visual angle.
+//! - [`filter`]: the 1€ filter. [`detect`]: online I-VT and I-DT fixation detection.
+//! - [`fixation_list`]: fixation lists as CSV (`eye,start_s,end_s,x_px,y_px`).
+//! - [`agreement`]: event-level agreement of two fixation lists (Hooge et al. 2018).
 //! - [`rng`], [`viewer`]: the one seeded generator and the one scripted viewer.
 //! - [`script`]: deterministic scripted gaze at a rate: fixed point, circle, the viewer's saccades.
 
@@ -29,8 +33,13 @@ use std::io::{self, BufRead};
 
 use thiserror::Error;
 
+pub mod agreement;
 pub mod asc;
 pub mod csv;
+pub mod detect;
+pub mod filter;
+pub mod fixation_list;
+pub mod geometry;
 pub mod opengaze;
 pub mod rng;
 pub mod script;
