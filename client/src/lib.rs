@@ -18,6 +18,8 @@
 //!   from stdin, a Gazepoint tracker over TCP, scripts.
 //! - [`bridge`]: [`bridge::forward`], the one loop from a source through the pacer into a sender
 //!   that keeps going past malformed input and counts what it saw.
+//! - [`fixations`]: `foveal fixations`, the online detector run over a recording, scored against a
+//!   reference list.
 //! - [`watch`]: subscribes to frames, prints a summary line per second, writes frame metrics as CSV.
 //! - [`health`]: the standard gRPC health check.
 
@@ -28,6 +30,7 @@ use thiserror::Error;
 use tonic::transport::{Channel, Endpoint};
 
 pub mod bridge;
+pub mod fixations;
 pub use foveal_gaze as gaze;
 pub mod health;
 pub mod pacer;
