@@ -381,6 +381,8 @@ pub struct Idt {
     geometry: ViewingGeometry,
     eye: Eye,
     window: VecDeque<Point>,
+    /// Sum of the window's x and y (so a long fixation's centre costs O(1) per sample).
+    sum: (f64, f64),
     /// min az, max az, min el, max el of the window.
     bounds: [f64; 4],
     last_valid_s: Option<f64>,
@@ -395,9 +397,28 @@ impl Idt {
             geometry,
             eye: Eye::Unspecified,
             window: VecDeque::with_capacity(256),
+            sum: (0.0, 0.0),
             bounds: [0.0; 4],
             last_valid_s: None,
         }
+    }
+
+    fn push_point(&mut self, p: Point) {
+        self.sum.0 += p.x;
+        self.sum.1 += p.y;
+        self.window.push_back(p);
+    }
+
+    fn pop_point(&mut self) {
+        if let Some(p) = self.window.pop_front() {
+            self.sum.0 -= p.x;
+            self.sum.1 -= p.y;
+        }
+    }
+
+    fn clear_window(&mut self) {
+        self.window.clear();
+        self.sum = (0.0, 0.0);
     }
 
     fn dispersion(b: &[f64; 4]) -> f64 {
@@ -433,10 +454,7 @@ impl Idt {
         let first = self.window.front()?;
         let last = self.window.back()?;
         let n = self.window.len();
-        let (sx, sy) = self
-            .window
-            .iter()
-            .fold((0.0, 0.0), |(sx, sy), p| (sx + p.x, sy + p.y));
+        let (sx, sy) = self.sum;
         #[allow(clippy::cast_precision_loss)]
         let nf = n as f64;
         Some(FixationEvent {
@@ -459,7 +477,7 @@ impl Idt {
         } else {
             None
         };
-        self.window.clear();
+        self.clear_window();
         event
     }
 
@@ -501,19 +519,19 @@ impl Idt {
             [b[0].min(az), b[1].max(az), b[2].min(el), b[3].max(el)]
         };
         if Self::dispersion(&grown) <= self.params.max_dispersion_deg {
-            self.window.push_back(p);
+            self.push_point(p);
             self.bounds = grown;
         } else if self.in_fixation() {
             // The fixation ends before this sample; the sample starts a new window.
             finished = self.window_event();
-            self.window.clear();
-            self.window.push_back(p);
+            self.clear_window();
+            self.push_point(p);
             self.bounds = [az, az, el, el];
         } else {
             // Not a fixation yet: slide the window's start until it fits.
-            self.window.push_back(p);
+            self.push_point(p);
             while self.window.len() > 1 {
-                self.window.pop_front();
+                self.pop_point();
                 self.recompute_bounds();
                 if Self::dispersion(&self.bounds) <= self.params.max_dispersion_deg {
                     break;
@@ -521,6 +539,7 @@ impl Idt {
             }
             if self.window.len() == 1 {
                 self.bounds = [az, az, el, el];
+                self.sum = (s.x, s.y);
             }
         }
         DetectorOutput {

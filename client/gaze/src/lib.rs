@@ -24,6 +24,7 @@
 //!   the limit on timestamp jumps.
 //! - [`geometry`]: normalised screen points as gaze directions in degrees of visual angle.
 //! - [`filter`]: the 1€ filter. [`detect`]: online I-VT and I-DT fixation detection.
+//! - [`online`]: the server's per-source processing: eyes combined, filter, detector, track loss.
 //! - [`fixation_list`]: fixation lists as CSV (`eye,start_s,end_s,x_px,y_px`).
 //! - [`agreement`]: event-level agreement of two fixation lists (Hooge et al. 2018).
 //! - [`rng`], [`viewer`]: the one seeded generator and the one scripted viewer.
@@ -40,6 +41,7 @@ pub mod detect;
 pub mod filter;
 pub mod fixation_list;
 pub mod geometry;
+pub mod online;
 pub mod opengaze;
 pub mod rng;
 pub mod script;
