@@ -23,6 +23,7 @@
 use crate::detect::{Detector, DetectorParams, FixationEvent};
 use crate::filter::{OneEuro, OneEuroParams};
 use crate::geometry::ViewingGeometry;
+use crate::validate::MAX_TIME_JUMP_S;
 use crate::{Binocular, Eye, GazeSample};
 
 /// Configuration of the online processing.
@@ -151,6 +152,9 @@ pub struct ProcessorCounts {
     pub other_eye: u64,
     /// Fixations finished.
     pub fixations: u64,
+    /// Times the tracker clock went back or jumped ahead (beyond [`MAX_TIME_JUMP_S`]) and the
+    /// filter and detector started afresh.
+    pub clock_resets: u64,
 }
 
 /// The online processor of one gaze source.
@@ -168,6 +172,8 @@ pub struct GazeProcessor {
     last_fixation: Option<(FixationEvent, f64)>,
     /// Arrival time of the first missing sample since the last valid one.
     lost_since_s: Option<f64>,
+    /// Tracker time of the last sample processed.
+    last_t_s: Option<f64>,
     counts: ProcessorCounts,
 }
 
@@ -186,6 +192,7 @@ impl GazeProcessor {
             current: None,
             last_fixation: None,
             lost_since_s: None,
+            last_t_s: None,
             counts: ProcessorCounts::default(),
         }
     }
@@ -258,6 +265,23 @@ impl GazeProcessor {
     }
 
     fn process(&mut self, s: &GazeSample, received_s: f64) {
+        // A new tracker clock (a new stream after a restart, or a long pause): the filter's and
+        // the detector's past say nothing about it. The last fixation is kept for holding.
+        if let Some(last) = self.last_t_s
+            && s.t_s.is_finite()
+            && (s.t_s < last || s.t_s - last > MAX_TIME_JUMP_S)
+        {
+            self.filter = self.config.filter.map(OneEuro::new);
+            self.detector = self
+                .config
+                .detector
+                .map(|d| Detector::new(d, self.config.geometry));
+            self.current = None;
+            self.counts.clock_resets += 1;
+        }
+        if s.t_s.is_finite() {
+            self.last_t_s = Some(s.t_s);
+        }
         if !s.is_valid() {
             self.counts.missing += 1;
             self.lost_since_s.get_or_insert(received_s);
@@ -442,6 +466,28 @@ mod tests {
         right.push(&at(1.0, 0.75, 0.5, Eye::Right), 10.0);
         assert_eq!(right.state(10.0).steer.map(|f| f.x), Some(0.75));
         assert_eq!(right.counts().other_eye, 1);
+    }
+
+    #[test]
+    fn a_new_tracker_clock_starts_the_detector_afresh() {
+        let config = ProcessorConfig {
+            detector: Some(DetectorParams::Ivt(IvtParams::default())),
+            ..ProcessorConfig::default()
+        };
+        let mut p = GazeProcessor::new(config);
+        for i in 0..100 {
+            let t = 50.0 + f64::from(i) * 0.001;
+            p.push(&at(t, 0.25, 0.25, Eye::Left), f64::from(i) * 0.001);
+        }
+        // The tracker restarted: its clock is back at 0, the eye elsewhere.
+        for i in 0..100 {
+            let t = f64::from(i) * 0.001;
+            p.push(&at(t, 0.75, 0.75, Eye::Left), 0.1 + t);
+        }
+        let s = p.state(0.2);
+        assert_eq!(s.track, Track::Fixation);
+        assert_eq!(s.steer.map(|f| f.x), Some(0.75));
+        assert_eq!(p.counts().clock_resets, 1);
     }
 
     #[test]
