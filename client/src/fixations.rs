@@ -78,7 +78,7 @@ fn read_samples(
             if let Some(s) = options.screen {
                 r = r.with_screen(s);
             }
-            while let Some(item) = r.next() {
+            for item in r.by_ref() {
                 keep(item, report);
             }
             r.screen()
@@ -88,7 +88,7 @@ fn read_samples(
             if let Some(s) = options.screen {
                 r = r.with_screen(s);
             }
-            while let Some(item) = r.next() {
+            for item in r.by_ref() {
                 keep(item, report);
             }
             r.screen()

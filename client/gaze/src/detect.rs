@@ -294,7 +294,7 @@ impl Ivt {
         }
         if self
             .last_valid_s
-            .is_some_and(|t| !(s.t_s - t <= self.params.max_gap_s))
+            .is_some_and(|t| s.t_s - t > self.params.max_gap_s)
         {
             // Back from a long gap: the eye may be anywhere; start afresh.
             keep(self.close_open());
@@ -498,7 +498,7 @@ impl Idt {
         }
         if self
             .last_valid_s
-            .is_some_and(|t| !(s.t_s - t <= self.params.max_gap_s))
+            .is_some_and(|t| s.t_s - t > self.params.max_gap_s)
         {
             finished = self.end_window();
         }

@@ -102,7 +102,7 @@ impl OneEuro {
             return (x, y);
         };
         let dt = t_s - t0;
-        if !(dt > 0.0 && dt.is_finite()) || !x.is_finite() || !y.is_finite() {
+        if !(dt > 0.0 && dt.is_finite() && x.is_finite() && y.is_finite()) {
             return (axes[0].value, axes[1].value);
         }
         let p = self.params;
