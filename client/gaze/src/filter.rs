@@ -49,6 +49,12 @@ impl OneEuroParams {
     }
 }
 
+/// Largest speed the filter's derivative takes, normalised units per second. The eye peaks near
+/// 700 deg/s, about 15 screen widths per second; two samples microseconds apart (or a subnormal
+/// time step) would otherwise give an infinite speed, and infinity minus infinity on the next
+/// step a NaN.
+const MAX_SPEED: f64 = 1e4;
+
 /// Smoothing factor of an exponential filter with cutoff `cutoff_hz` at step `dt_s`.
 fn alpha(cutoff_hz: f64, dt_s: f64) -> f64 {
     let tau = 1.0 / (std::f64::consts::TAU * cutoff_hz);
@@ -108,7 +114,8 @@ impl OneEuro {
         let p = self.params;
         let a_d = alpha(p.d_cutoff_hz, dt);
         let step = |axis: Axis, raw: f64| {
-            let speed = axis.speed + a_d * ((raw - axis.value) / dt - axis.speed);
+            let derivative = ((raw - axis.value) / dt).clamp(-MAX_SPEED, MAX_SPEED);
+            let speed = axis.speed + a_d * (derivative - axis.speed);
             let cutoff = p.min_cutoff_hz + p.beta * speed.abs();
             let value = axis.value + alpha(cutoff, dt) * (raw - axis.value);
             Axis { value, speed }
@@ -146,6 +153,19 @@ mod tests {
         assert_eq!(f.filter(1.299, 0.1, 0.1), out);
         f.reset();
         assert_eq!(f.filter(2.0, 0.1, 0.2), (0.1, 0.2));
+    }
+
+    #[test]
+    fn subnormal_time_steps_stay_finite() {
+        // Found by fuzzing: a step of 2.6e-314 s made the speed infinite, the next one NaN.
+        let mut f = OneEuro::new(OneEuroParams::default());
+        f.filter(0.0, 0.0, 0.0);
+        let a = f.filter(2.6e-314, 0.000_476_8, 0.000_476_8);
+        let b = f.filter(1.0, 0.5, 0.5);
+        let c = f.filter(1.0 + 1e-300, -1.0, 2.0);
+        for (x, y) in [a, b, c] {
+            assert!(x.is_finite() && y.is_finite(), "{a:?} {b:?} {c:?}");
+        }
     }
 
     #[test]
