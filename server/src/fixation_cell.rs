@@ -45,7 +45,8 @@ pub struct RawGaze {
     pub x: f64,
     /// Normalised y.
     pub y: f64,
-    /// Age at frame start, seconds (server clock, from receipt).
+    /// Age at frame start, seconds: since receipt (server clock) plus the sample's delay beyond
+    /// the source's fastest recent transit.
     pub age_s: f64,
     /// The sample's tracker time, seconds.
     pub tracker_time_s: f64,
@@ -97,10 +98,11 @@ impl FixationCell {
         }
     }
 
-    /// Makes (x, y), received at `received`, the latest gaze (a valid sample of unknown eye at
-    /// tracker time 0).
+    /// Makes (x, y), received at `received`, the latest gaze: a valid sample of unknown eye,
+    /// stamped with its receipt time (so it has no excess transit).
     pub fn store(&self, x: f64, y: f64, received: Instant) {
-        let s = GazeSample::valid(0.0, x, y, foveal_gaze::Eye::Unspecified);
+        let t_s = self.seconds(received);
+        let s = GazeSample::valid(t_s, x, y, foveal_gaze::Eye::Unspecified);
         self.push([&s], received);
     }
 
@@ -115,12 +117,12 @@ impl FixationCell {
             .unwrap_or_else(PoisonError::into_inner)
             .processor
             .state(now_s);
-        // A sample stored after `now` was taken has age 0, not a negative one.
-        let age = |received_s: f64| (now_s - received_s).max(0.0);
+        // Since receipt (a sample stored after `now` was taken has 0, not a negative age), plus
+        // the delay beyond the source's fastest recent transit (`foveal_gaze::clock`).
         let raw = state.raw.map(|r| RawGaze {
             x: r.x,
             y: r.y,
-            age_s: age(r.received_s),
+            age_s: r.age_s(now_s),
             tracker_time_s: r.t_s,
         });
         let centre = |age_s, source| ResolvedFixation {
@@ -141,7 +143,7 @@ impl FixationCell {
                 FixationSource::FallbackTrackLost,
             ),
             (_, Some(p)) => {
-                let age_s = age(p.received_s);
+                let age_s = p.age_s(now_s);
                 if age_s > max_age.as_secs_f64() {
                     centre(age_s, FixationSource::FallbackStale)
                 } else {

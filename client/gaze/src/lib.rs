@@ -24,6 +24,7 @@
 //!   the limit on timestamp jumps.
 //! - [`geometry`]: normalised screen points as gaze directions in degrees of visual angle.
 //! - [`filter`]: the 1€ filter. [`detect`]: online I-VT and I-DT fixation detection.
+//! - [`clock`]: per-source clock offset, so a sample's age includes its delay on the way.
 //! - [`online`]: the server's per-source processing: eyes combined, filter, detector, track loss.
 //! - [`fixation_list`]: fixation lists as CSV (`eye,start_s,end_s,x_px,y_px`).
 //! - [`agreement`]: event-level agreement of two fixation lists (Hooge et al. 2018).
@@ -36,6 +37,7 @@ use thiserror::Error;
 
 pub mod agreement;
 pub mod asc;
+pub mod clock;
 pub mod csv;
 pub mod detect;
 pub mod filter;

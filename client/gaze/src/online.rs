@@ -20,6 +20,7 @@
 //! [`ProcessorConfig::pair_window_s`]), or one chosen eye (the other's samples are counted as
 //! unused). Samples of any other eye tag pass through as they are.
 
+use crate::clock::ClockSync;
 use crate::detect::{Detector, DetectorParams, FixationEvent};
 use crate::filter::{OneEuro, OneEuroParams};
 use crate::geometry::ViewingGeometry;
@@ -106,6 +107,17 @@ pub struct TimedPoint {
     pub t_s: f64,
     /// Arrival time of the sample, seconds on the caller's clock.
     pub received_s: f64,
+    /// How much later than the fastest recent sample of the source this one arrived, seconds
+    /// (see [`crate::clock`]): add it to the age since receipt.
+    pub transit_excess_s: f64,
+}
+
+impl TimedPoint {
+    /// Age at `now_s` (the caller's clock): since receipt, plus the excess transit.
+    #[must_use]
+    pub fn age_s(&self, now_s: f64) -> f64 {
+        (now_s - self.received_s).max(0.0) + self.transit_excess_s
+    }
 }
 
 /// What the steering point is and why.
@@ -169,11 +181,13 @@ pub struct GazeProcessor {
     raw: Option<TimedPoint>,
     filtered: Option<TimedPoint>,
     current: Option<FixationEvent>,
-    last_fixation: Option<(FixationEvent, f64)>,
+    /// The last fixation, with the arrival time and excess transit of its latest sample.
+    last_fixation: Option<(FixationEvent, f64, f64)>,
     /// Arrival time of the first missing sample since the last valid one.
     lost_since_s: Option<f64>,
     /// Tracker time of the last sample processed.
     last_t_s: Option<f64>,
+    clock: ClockSync,
     counts: ProcessorCounts,
 }
 
@@ -193,6 +207,7 @@ impl GazeProcessor {
             last_fixation: None,
             lost_since_s: None,
             last_t_s: None,
+            clock: ClockSync::new(),
             counts: ProcessorCounts::default(),
         }
     }
@@ -277,6 +292,7 @@ impl GazeProcessor {
                 .detector
                 .map(|d| Detector::new(d, self.config.geometry));
             self.current = None;
+            self.clock.reset();
             self.counts.clock_resets += 1;
         }
         if s.t_s.is_finite() {
@@ -287,11 +303,13 @@ impl GazeProcessor {
             self.lost_since_s.get_or_insert(received_s);
         } else {
             self.lost_since_s = None;
+            let transit_excess_s = self.clock.observe(s.t_s, received_s);
             self.raw = Some(TimedPoint {
                 x: s.x,
                 y: s.y,
                 t_s: s.t_s,
                 received_s,
+                transit_excess_s,
             });
             let (x, y) = match &mut self.filter {
                 Some(f) => f.filter(s.t_s, s.x, s.y),
@@ -302,17 +320,19 @@ impl GazeProcessor {
                 y,
                 t_s: s.t_s,
                 received_s,
+                transit_excess_s,
             });
         }
         if let Some(d) = &mut self.detector {
             let out = d.push(s);
+            let excess = self.raw.map_or(0.0, |r| r.transit_excess_s);
             if let Some(done) = out.finished {
                 self.counts.fixations += 1;
-                self.last_fixation = Some((done, received_s));
+                self.last_fixation = Some((done, received_s, excess));
             }
             if let Some(c) = out.current {
                 self.current = Some(c);
-                self.last_fixation = Some((c, received_s));
+                self.last_fixation = Some((c, received_s, excess));
             } else {
                 self.current = None;
             }
@@ -333,11 +353,12 @@ impl GazeProcessor {
             };
         };
         let held = match (self.detector.is_some(), self.last_fixation) {
-            (true, Some((f, received_s))) => TimedPoint {
+            (true, Some((f, received_s, transit_excess_s))) => TimedPoint {
                 x: f.x,
                 y: f.y,
                 t_s: f.end_s,
                 received_s,
+                transit_excess_s,
             },
             _ => latest,
         };
@@ -370,6 +391,7 @@ impl GazeProcessor {
                     y: f.y,
                     t_s: f.end_s,
                     received_s: latest.received_s,
+                    transit_excess_s: latest.transit_excess_s,
                 },
             ),
             (Some(_), None) => (Track::Saccade, held),
