@@ -8,8 +8,9 @@
 //! # Layout
 //! - [`connect`], [`endpoint`], [`ClientError`]: one way to reach a server, with a short connect
 //!   timeout so that a missing server fails fast instead of hanging a script.
-//! - [`gaze`]: pure parsers and generators of [`gaze::GazeSample`]s (CSV, EyeLink ASC, Gazepoint
-//!   Open Gaze, scripted gaze).
+//! - [`gaze`]: the `foveal-gaze` crate, re-exported: pure parsers and generators of
+//!   [`gaze::GazeSample`]s (CSV, EyeLink ASC, Gazepoint Open Gaze, scripted gaze), validation,
+//!   filters and fixation detection.
 //! - [`pacer`]: maps sample timestamps to wall-clock deadlines for real-time or N× replay.
 //! - [`sender`]: [`sender::GazeSender`], one interface over the two gaze rpcs (client streaming
 //!   `StreamGaze`, unary batched `PushGaze`) that returns one [`sender::SendSummary`].
@@ -17,6 +18,8 @@
 //!   from stdin, a Gazepoint tracker over TCP, scripts.
 //! - [`bridge`]: [`bridge::forward`], the one loop from a source through the pacer into a sender
 //!   that keeps going past malformed input and counts what it saw.
+//! - [`fixations`]: `foveal fixations`, the online detector run over a recording, scored against a
+//!   reference list.
 //! - [`watch`]: subscribes to frames, prints a summary line per second, writes frame metrics as CSV.
 //! - [`health`]: the standard gRPC health check.
 
@@ -27,7 +30,8 @@ use thiserror::Error;
 use tonic::transport::{Channel, Endpoint};
 
 pub mod bridge;
-pub mod gaze;
+pub mod fixations;
+pub use foveal_gaze as gaze;
 pub mod health;
 pub mod pacer;
 pub mod sender;

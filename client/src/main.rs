@@ -44,6 +44,75 @@ enum Command {
     Watch(WatchArgs),
     /// Check the server's gRPC health; exit 0 if SERVING, 1 otherwise.
     Health(HealthArgs),
+    /// Detect fixations in a recording (CSV or ASC, mono or binocular) with the server's online
+    /// detector; print them as CSV (`eye,start_s,end_s,x_px,y_px`, seconds from the first
+    /// sample), and with --compare the agreement with a reference list as `#` lines.
+    Fixations(FixationsArgs),
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum DetectorArg {
+    /// Velocity threshold (I-VT).
+    Ivt,
+    /// Dispersion threshold (I-DT).
+    Idt,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum EyesArg {
+    /// Mean of the valid eyes.
+    Mean,
+    /// Left eye only.
+    Left,
+    /// Right eye only.
+    Right,
+    /// Each eye detected apart.
+    Both,
+}
+
+#[derive(Debug, Args)]
+struct FixationsArgs {
+    /// The recording.
+    file: PathBuf,
+    /// A reference fixation list (`eye,start_s,end_s,x_px,y_px`) to score against (Hooge et al.
+    /// 2018: precision, recall, F1, onset and offset differences).
+    #[arg(long)]
+    compare: Option<PathBuf>,
+    /// Detector.
+    #[arg(long, value_enum, default_value = "ivt")]
+    detector: DetectorArg,
+    /// I-VT velocity threshold, degrees per second (default 30, Olsen 2012).
+    #[arg(long)]
+    velocity_threshold: Option<f64>,
+    /// I-DT dispersion threshold, degrees (default 1.0, Salvucci and Goldberg 2000).
+    #[arg(long)]
+    dispersion: Option<f64>,
+    /// Shortest fixation, milliseconds (default 60 for I-VT, 100 for I-DT).
+    #[arg(long)]
+    min_duration_ms: Option<f64>,
+    /// Eyes of a binocular recording.
+    #[arg(long, value_enum, default_value = "mean")]
+    eyes: EyesArg,
+    /// Physical screen size, WIDTHxHEIGHT in cm (default 53.1x29.9, a 24-inch 16:9 monitor).
+    #[arg(long, value_parser = parse_size_cm)]
+    screen_cm: Option<(f64, f64)>,
+    /// Eye to screen distance, cm (default 60).
+    #[arg(long)]
+    distance_cm: Option<f64>,
+    #[command(flatten)]
+    screen: ScreenArg,
+}
+
+fn parse_size_cm(text: &str) -> Result<(f64, f64), String> {
+    let (w, h) = text
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("{text:?} is not WIDTHxHEIGHT"))?;
+    let number = |s: &str| {
+        s.trim()
+            .parse::<f64>()
+            .map_err(|_| format!("{s:?} is not a number"))
+    };
+    Ok((number(w)?, number(h)?))
 }
 
 /// Where the server is.
@@ -292,7 +361,74 @@ async fn run(cli: Cli) -> Result<ExitCode> {
         Command::Bridge(args) => bridge(args).await,
         Command::Watch(args) => watch(args).await,
         Command::Health(args) => health(args).await,
+        Command::Fixations(args) => fixations(args),
     }
+}
+
+fn fixations(args: FixationsArgs) -> Result<ExitCode> {
+    use foveal_client::gaze::Binocular;
+    use foveal_client::gaze::detect::{DetectorParams, IdtParams, IvtParams};
+    use foveal_client::gaze::geometry::ViewingGeometry;
+
+    let mut detector = match args.detector {
+        DetectorArg::Ivt => DetectorParams::Ivt(IvtParams::default()),
+        DetectorArg::Idt => DetectorParams::Idt(IdtParams::default()),
+    };
+    match &mut detector {
+        DetectorParams::Ivt(p) => {
+            if args.dispersion.is_some() {
+                bail!("--dispersion is an I-DT threshold: use it with --detector idt");
+            }
+            p.velocity_threshold_deg_s = args
+                .velocity_threshold
+                .unwrap_or(p.velocity_threshold_deg_s);
+            p.min_duration_s = args
+                .min_duration_ms
+                .map_or(p.min_duration_s, |ms| ms / 1000.0);
+        }
+        DetectorParams::Idt(p) => {
+            if args.velocity_threshold.is_some() {
+                bail!("--velocity-threshold is an I-VT threshold: use it with --detector ivt");
+            }
+            p.max_dispersion_deg = args.dispersion.unwrap_or(p.max_dispersion_deg);
+            p.min_duration_s = args
+                .min_duration_ms
+                .map_or(p.min_duration_s, |ms| ms / 1000.0);
+        }
+    }
+    if let Err(name) = detector.validate() {
+        bail!("detector parameter `{name}` must be finite and positive");
+    }
+    let mut geometry = ViewingGeometry::default();
+    if let Some((w, h)) = args.screen_cm {
+        (geometry.width_cm, geometry.height_cm) = (w, h);
+    }
+    geometry.distance_cm = args.distance_cm.unwrap_or(geometry.distance_cm);
+    geometry.validate().context("--screen-cm / --distance-cm")?;
+    let options = foveal_client::fixations::FixationOptions {
+        detector,
+        geometry,
+        screen: args.screen.screen,
+        eyes: match args.eyes {
+            EyesArg::Mean => Binocular::Mean,
+            EyesArg::Left => Binocular::Left,
+            EyesArg::Right => Binocular::Right,
+            EyesArg::Both => Binocular::Both,
+        },
+    };
+    let report = foveal_client::fixations::run(&args.file, args.compare.as_deref(), &options)?;
+    for line in report.bad_lines.iter().take(10) {
+        eprintln!("skipped: {line}");
+    }
+    eprintln!(
+        "{} samples ({} missing), {} lines skipped, {} fixations",
+        report.samples,
+        report.missing,
+        report.bad_lines.len(),
+        report.fixations.len()
+    );
+    foveal_client::fixations::write_report(io::stdout().lock(), &report).context("write stdout")?;
+    Ok(ExitCode::SUCCESS)
 }
 
 /// Completes on Ctrl-C; never, if the signal cannot be listened to.

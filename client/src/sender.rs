@@ -22,7 +22,7 @@ use tokio_stream::wrappers::ReceiverStream;
 use tonic::transport::Channel;
 
 use crate::ClientError;
-use crate::gaze::GazeSample;
+use crate::gaze::{Eye, GazeSample};
 
 /// Which rpc carries the samples.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -205,7 +205,7 @@ impl GazeSender {
     /// # Errors
     /// [`ClientError::Rpc`] when the stream broke or a push failed.
     pub async fn send(&mut self, sample: GazeSample) -> Result<(), ClientError> {
-        let message = pb::GazeSample::from(sample);
+        let message = to_pb(&sample);
         match &mut self.inner {
             Inner::Stream { tx, .. } => {
                 let closed = match tx {
@@ -328,6 +328,25 @@ async fn await_call(call: &mut StreamCall) -> Result<pb::StreamGazeSummary, Clie
             rpc: "StreamGaze",
             status: tonic::Status::internal(format!("stream task failed: {join}")),
         }),
+    }
+}
+
+/// A sample as the protocol carries it (`tracker_time_s` is the sample's own time).
+#[must_use]
+pub fn to_pb(s: &GazeSample) -> pb::GazeSample {
+    let eye = match s.eye {
+        Eye::Unspecified => pb::Eye::Unspecified,
+        Eye::Left => pb::Eye::Left,
+        Eye::Right => pb::Eye::Right,
+        Eye::Binocular => pb::Eye::Binocular,
+    };
+    pb::GazeSample {
+        tracker_time_s: s.t_s,
+        x: s.x,
+        y: s.y,
+        validity: s.validity,
+        eye: eye as i32,
+        fixation: s.fixation,
     }
 }
 

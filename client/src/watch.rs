@@ -64,6 +64,7 @@ pub fn source_name(source: i32) -> &'static str {
         Ok(pb::FixationSource::Gaze) => "GAZE",
         Ok(pb::FixationSource::FallbackNoGaze) => "FALLBACK_NO_GAZE",
         Ok(pb::FixationSource::FallbackStale) => "FALLBACK_STALE",
+        Ok(pb::FixationSource::FallbackTrackLost) => "FALLBACK_TRACK_LOST",
         Ok(pb::FixationSource::Unspecified) | Err(_) => "UNSPECIFIED",
     }
 }
@@ -389,6 +390,7 @@ mod tests {
                 y: 0.5,
                 age_s: 0.01,
                 source: pb::FixationSource::Gaze as i32,
+                ..Default::default()
             }),
             metrics: Some(pb::FrameMetrics {
                 collision_time_s: t_s,

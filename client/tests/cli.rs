@@ -116,3 +116,68 @@ async fn commands_talk_to_the_server_and_exit_with_the_right_code() {
     let out = run(health, "").await;
     assert_eq!(out.status.code(), Some(1), "no server: unhealthy");
 }
+
+/// `foveal fixations` on the shared EyeLink recording, scored against the tracker's own parser:
+/// the documented target (F1 >= 0.9, median onset and offset differences <= 10 ms), read from
+/// the command's own output; the output reads back as a fixation list.
+#[test]
+fn fixations_agree_with_the_tracker_parser_on_the_shared_recording() {
+    let recording = gaze_data("eyelink-1000hz-left.asc");
+    let reference = gaze_data("eyelink-1000hz-left.fixations.csv");
+    let out = foveal()
+        .arg("fixations")
+        .arg(&recording)
+        .arg("--compare")
+        .arg(&reference)
+        .output()
+        .expect("foveal runs");
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    let listed =
+        foveal_client::gaze::fixation_list::read(stdout.as_bytes()).expect("a fixation list");
+    assert_eq!(listed.len(), 19, "{stdout}");
+    assert!(listed.iter().all(|f| f.eye == 0), "the ASC file says LEFT");
+    let f1: f64 = stdout
+        .lines()
+        .find_map(|l| {
+            l.strip_prefix("# precision ")?
+                .split("F1 ")
+                .nth(1)?
+                .trim()
+                .parse()
+                .ok()
+        })
+        .expect("an F1 line");
+    assert!(f1 >= 0.9, "{stdout}");
+    let median = |kind: &str| -> f64 {
+        stdout
+            .lines()
+            .find_map(|l| {
+                let rest = l.strip_prefix(&format!("# {kind} difference"))?;
+                rest.split("median |d| ")
+                    .nth(1)?
+                    .split(" ms")
+                    .next()?
+                    .parse()
+                    .ok()
+            })
+            .expect("a timing line")
+    };
+    assert!(
+        median("onset") <= 10.0 && median("offset") <= 10.0,
+        "{stdout}"
+    );
+
+    // A bad option is refused with the field named, before any work.
+    let out = foveal()
+        .args(["fixations", "--distance-cm", "0"])
+        .arg(&recording)
+        .output()
+        .expect("foveal runs");
+    assert!(!out.status.success());
+    assert!(
+        text(&out.stderr).contains("distance_cm"),
+        "{}",
+        text(&out.stderr)
+    );
+}

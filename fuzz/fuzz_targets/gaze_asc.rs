@@ -1,7 +1,7 @@
 //! EyeLink ASC files (`foveal bridge asc`, `foveal gaze replay`): never panic, and valid samples are
 //! finite.
 #![no_main]
-use foveal_client::gaze::asc::AscReader;
+use foveal_gaze::asc::AscReader;
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

@@ -1,7 +1,7 @@
 //! CSV gaze lines (files and stdin of `foveal bridge csv`): never panic, and every sample the reader
 //! accepts as valid has finite coordinates and time.
 #![no_main]
-use foveal_client::gaze::csv::CsvGazeReader;
+use foveal_gaze::csv::CsvGazeReader;
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

@@ -1,7 +1,7 @@
 //! Gazepoint Open Gaze records arriving over TCP (`foveal bridge gazepoint`): never panic, and valid
 //! samples are finite.
 #![no_main]
-use foveal_client::gaze::opengaze::OpenGazeParser;
+use foveal_gaze::opengaze::OpenGazeParser;
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

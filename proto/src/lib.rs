@@ -171,6 +171,7 @@ mod tests {
                 y: 0.75,
                 age_s: 0.01,
                 source: pb::FixationSource::Gaze as i32,
+                ..Default::default()
             }),
             poses: Some(pb::Poses::pack(
                 pb::Vec3 {

@@ -35,18 +35,6 @@ fn env_or<T: std::str::FromStr>(name: &str, default: T) -> T {
         .unwrap_or(default)
 }
 
-/// xorshift64*: enough randomness for send phases without a dependency.
-struct Rng(u64);
-
-impl Rng {
-    fn unit(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 struct Server {
     addr: SocketAddr,
     stop: oneshot::Sender<()>,
@@ -110,7 +98,7 @@ async fn latency(
             .stream_gaze(tokio_stream::wrappers::ReceiverStream::new(rx))
             .await
     });
-    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let mut rng = foveal_gaze::rng::SplitMix64::new(0x9e37_79b9_7f4a_7c15);
     let mut latencies = Vec::with_capacity(samples);
     let mut ages = Vec::with_capacity(samples);
     let mut profiles = Vec::new();
@@ -118,7 +106,7 @@ async fn latency(
     for i in 0..samples {
         // A fresh point each time, so the frame that first uses it is unambiguous.
         let x = 0.1 + 0.8 * ((i as f64 * 0.618_033_988_75) % 1.0);
-        let y = 0.2 + 0.6 * rng.unit();
+        let y = 0.2 + 0.6 * rng.next_f64();
         let sample = pb::GazeSample {
             tracker_time_s: t0.elapsed().as_secs_f64(),
             x,
@@ -143,7 +131,7 @@ async fn latency(
             }
         }
         // A random phase of the frame period before the next sample.
-        tokio::time::sleep(period.mul_f64(1.0 + rng.unit())).await;
+        tokio::time::sleep(period.mul_f64(1.0 + rng.next_f64())).await;
     }
     drop(tx);
     gaze.await??;

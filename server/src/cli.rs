@@ -103,6 +103,17 @@ pub struct Cli {
         default_value_t = 0.5
     )]
     pub gaze_max_age_s: f64,
+    /// Fixation detection on incoming gaze: `off` (every valid sample steers, lowest latency),
+    /// `ivt` (velocity threshold, 30 deg/s) or `idt` (dispersion threshold, 1 deg). With a
+    /// detector, saccade samples no longer steer: the last fixation is held.
+    #[arg(long, env = "FOVEAL_GAZE_DETECTOR", value_enum, default_value = "off")]
+    pub gaze_detector: GazeDetectorArg,
+    /// Smooth gaze with a 1-euro filter (Casiez et al. 2012) before it steers.
+    #[arg(long, env = "FOVEAL_GAZE_FILTER")]
+    pub gaze_filter: bool,
+    /// Eyes of a binocular tracker: the mean of the valid eyes, or one eye.
+    #[arg(long, env = "FOVEAL_GAZE_EYES", value_enum, default_value = "mean")]
+    pub gaze_eyes: GazeEyesArg,
     /// Log filter (`info`, `debug`, `foveal_server=debug,info`, ...).
     #[arg(long, env = "FOVEAL_LOG", default_value = "info")]
     pub log_level: String,
@@ -243,14 +254,73 @@ impl Cli {
                 expected: "must be finite and > 0 (seconds)".into(),
             });
         }
+        let gaze_processing = self.gaze_processing(&sim.display);
         let config = ServerConfig {
             sim,
             frame_rate_hz: self.frame_rate,
             gaze_max_age: Duration::from_secs_f64(max_age.min(1e6)),
+            gaze_processing,
             ..ServerConfig::default()
         };
         config.validate()?;
         Ok(config)
+    }
+}
+
+/// `--gaze-detector`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum GazeDetectorArg {
+    /// Every valid sample steers.
+    Off,
+    /// Velocity threshold (I-VT).
+    Ivt,
+    /// Dispersion threshold (I-DT).
+    Idt,
+}
+
+/// `--gaze-eyes`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum GazeEyesArg {
+    /// Mean of the valid eyes.
+    Mean,
+    /// Left eye only.
+    Left,
+    /// Right eye only.
+    Right,
+}
+
+impl Cli {
+    /// The gaze processing the flags ask for, its degrees measured on the engine's display.
+    fn gaze_processing(
+        &self,
+        display: &foveal_engine::Display,
+    ) -> foveal_gaze::online::ProcessorConfig {
+        use foveal_gaze::Binocular;
+        use foveal_gaze::detect::{DetectorParams, IdtParams, IvtParams};
+        let (w, h) = (f64::from(display.width_px), f64::from(display.height_px));
+        let diagonal_cm = display.diagonal_in * 2.54;
+        let geometry = foveal_gaze::geometry::ViewingGeometry {
+            width_cm: diagonal_cm * w / w.hypot(h),
+            height_cm: diagonal_cm * h / w.hypot(h),
+            distance_cm: display.viewing_distance_cm,
+        };
+        foveal_gaze::online::ProcessorConfig {
+            eyes: match self.gaze_eyes {
+                GazeEyesArg::Mean => Binocular::Mean,
+                GazeEyesArg::Left => Binocular::Left,
+                GazeEyesArg::Right => Binocular::Right,
+            },
+            filter: self
+                .gaze_filter
+                .then(foveal_gaze::filter::OneEuroParams::default),
+            detector: match self.gaze_detector {
+                GazeDetectorArg::Off => None,
+                GazeDetectorArg::Ivt => Some(DetectorParams::Ivt(IvtParams::default())),
+                GazeDetectorArg::Idt => Some(DetectorParams::Idt(IdtParams::default())),
+            },
+            geometry,
+            ..foveal_gaze::online::ProcessorConfig::default()
+        }
     }
 }
 
@@ -335,5 +405,38 @@ mod tests {
             bad.server_config().map_err(|e| e.field),
             Err("gaze_max_age")
         );
+    }
+
+    #[test]
+    fn gaze_processing_flags_reach_the_config() {
+        let c = Cli::try_parse_from(["foveal-server"])
+            .expect("parses")
+            .server_config()
+            .expect("valid");
+        assert_eq!(
+            c.gaze_processing.detector, None,
+            "raw samples steer by default"
+        );
+        let c = Cli::try_parse_from([
+            "foveal-server",
+            "--gaze-detector",
+            "ivt",
+            "--gaze-filter",
+            "--gaze-eyes",
+            "right",
+        ])
+        .expect("parses")
+        .server_config()
+        .expect("valid");
+        let p = c.gaze_processing;
+        assert!(matches!(
+            p.detector,
+            Some(foveal_gaze::detect::DetectorParams::Ivt(_))
+        ));
+        assert!(p.filter.is_some());
+        assert_eq!(p.eyes, foveal_gaze::Binocular::Right);
+        // 22-inch 16:10 at 70 cm, the engine's display.
+        assert!((p.geometry.width_cm - 47.4).abs() < 0.1, "{:?}", p.geometry);
+        assert_eq!(p.geometry.distance_cm, 70.0);
     }
 }

@@ -33,6 +33,9 @@ pub struct ServerConfig {
     pub summary_interval: Duration,
     /// How long shutdown waits for open calls to finish before giving up on them.
     pub shutdown_grace: Duration,
+    /// Online gaze processing (eyes, filter, fixation detector, track loss); by default raw
+    /// samples steer, the lowest latency from gaze to schedule.
+    pub gaze_processing: foveal_gaze::online::ProcessorConfig,
 }
 
 impl Default for ServerConfig {
@@ -44,6 +47,7 @@ impl Default for ServerConfig {
             frame_buffer: 32,
             summary_interval: Duration::from_secs(1),
             shutdown_grace: Duration::from_secs(5),
+            gaze_processing: foveal_gaze::online::ProcessorConfig::default(),
         }
     }
 }
@@ -57,6 +61,15 @@ impl ServerConfig {
                 field: "gaze_max_age",
                 value: format!("{:?}", self.gaze_max_age),
                 expected: format!("must be > 0 and <= {} s", MAX_GAZE_MAX_AGE.as_secs()),
+            });
+        }
+        if let Err(field) = self.gaze_processing.validate() {
+            return Err(ConfigError {
+                field: "gaze_processing",
+                value: field.to_owned(),
+                expected:
+                    "every gaze processing parameter finite and in range (see foveal_gaze::online)"
+                        .into(),
             });
         }
         if !(1..=1 << 16).contains(&self.frame_buffer) {

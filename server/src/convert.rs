@@ -336,6 +336,28 @@ pub fn fixation_to_pb(f: &ResolvedFixation) -> pb::Fixation {
         y: f.fixation.y,
         age_s: f.fixation.age_s,
         source: f.source as i32,
+        raw: f.raw.map(|r| pb::RawGaze {
+            x: r.x,
+            y: r.y,
+            age_s: r.age_s,
+            tracker_time_s: r.tracker_time_s,
+        }),
+        track: gaze_track_to_pb(f.track) as i32,
+        widen_deg: f.widen_deg,
+    }
+}
+
+/// The protocol's name for what the gaze processing steered by.
+pub fn gaze_track_to_pb(track: foveal_gaze::online::Track) -> pb::GazeTrack {
+    use foveal_gaze::online::Track;
+    match track {
+        Track::NoGaze => pb::GazeTrack::NoGaze,
+        Track::Raw => pb::GazeTrack::Raw,
+        Track::Fixation => pb::GazeTrack::Fixation,
+        Track::Saccade => pb::GazeTrack::Saccade,
+        Track::Holding => pb::GazeTrack::Holding,
+        Track::Widened => pb::GazeTrack::Widened,
+        Track::Lost => pb::GazeTrack::Lost,
     }
 }
 

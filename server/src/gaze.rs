@@ -1,20 +1,20 @@
 //! Validation of incoming gaze samples, shared by StreamGaze and PushGaze.
 //!
-//! Trackers send garbage in ordinary operation (NaN during blinks, wild values on track loss), so a
-//! bad sample is rejected on its own with a reason naming the field, counted, and the samples
-//! around it are kept. Only samples that pass every check can become the fixation.
+//! The rules themselves (fields, ranges, the timestamp-jump limit) live in
+//! [`foveal_gaze::validate`], so that a bridge, a test and the server agree on them; this module
+//! maps the protocol's samples onto them and keeps the per-call tally the rpcs answer with. A bad
+//! sample is rejected on its own with a reason naming the field, counted, and the samples around
+//! it are kept. Only samples that pass every check can become the fixation.
 
+use foveal_gaze::validate::{RejectKind, Validator};
+use foveal_gaze::{Eye, GazeSample};
 use foveal_proto::pb;
+
+pub use foveal_gaze::validate::{MAX_COORD, MAX_TIME_JUMP_S, MIN_COORD, RESYNC_SAMPLES};
 
 /// Largest PushGaze batch (samples). A 1 kHz tracker produces this in 10 s; anything larger is a
 /// client that should be streaming, and it keeps one call's decoding and locking bounded.
 pub const MAX_BATCH_SAMPLES: usize = 10_000;
-/// Smallest accepted gaze coordinate (normalised screen units). Fixations slightly off screen are
-/// real (a viewer glancing at the bezel) and legal; a whole screen beyond the edge is a broken
-/// calibration or a unit mistake (pixels sent as normalised), so it is rejected.
-pub const MIN_COORD: f64 = -1.0;
-/// Largest accepted gaze coordinate (normalised screen units); see [`MIN_COORD`].
-pub const MAX_COORD: f64 = 2.0;
 /// How many rejections a response lists; the counts stay exact past it.
 pub const MAX_LISTED_REJECTIONS: usize = 32;
 
@@ -29,34 +29,34 @@ pub struct GazePoint {
     pub tracker_time_s: f64,
 }
 
-/// Why a sample was not used.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Rejection {
-    /// The offending field of `GazeSample`.
-    pub field: &'static str,
-    /// What was wrong with it.
-    pub reason: String,
-}
+/// Why a sample was not used (the field, the rule, the message).
+pub type Rejection = foveal_gaze::validate::Rejection;
 
-impl Rejection {
-    fn new(field: &'static str, reason: impl Into<String>) -> Self {
-        Self {
-            field,
-            reason: reason.into(),
-        }
+/// A protocol sample as the gaze crate's sample; an unknown eye value is [`Eye::Unspecified`].
+#[must_use]
+pub fn from_pb(s: &pb::GazeSample) -> GazeSample {
+    let eye = match pb::Eye::try_from(s.eye) {
+        Ok(pb::Eye::Left) => Eye::Left,
+        Ok(pb::Eye::Right) => Eye::Right,
+        Ok(pb::Eye::Binocular) => Eye::Binocular,
+        Ok(pb::Eye::Unspecified) | Err(_) => Eye::Unspecified,
+    };
+    GazeSample {
+        t_s: s.tracker_time_s,
+        x: s.x,
+        y: s.y,
+        validity: s.validity,
+        eye,
+        fixation: s.fixation,
     }
 }
 
-/// Validates one source of samples (one stream or one batch) in order, and tallies the outcome.
-///
-/// Timestamps must not decrease *within* the source: each stream or batch may start its own tracker
-/// clock (a bridge reconnecting after the tracker restarted must not be locked out).
+/// Validates one source of samples (one stream or one batch) in order, and tallies the outcome
+/// for the rpc's answer (see [`foveal_gaze::validate`] for the rules, the time ones included).
 #[derive(Debug, Default)]
 pub struct GazeValidator {
     next_index: u64,
-    last_time_s: Option<f64>,
-    accepted: u64,
-    rejected: u64,
+    rules: Validator,
     rejections: Vec<pb::SampleRejection>,
     last_accepted_time_s: f64,
 }
@@ -72,14 +72,16 @@ impl GazeValidator {
     pub fn check(&mut self, sample: &pb::GazeSample) -> Result<GazePoint, Rejection> {
         let index = self.next_index;
         self.next_index += 1;
-        match self.verdict(sample) {
-            Ok(point) => {
-                self.accepted += 1;
-                self.last_accepted_time_s = point.tracker_time_s;
-                Ok(point)
+        match self.rules.check(&from_pb(sample)) {
+            Ok(()) => {
+                self.last_accepted_time_s = sample.tracker_time_s;
+                Ok(GazePoint {
+                    x: sample.x,
+                    y: sample.y,
+                    tracker_time_s: sample.tracker_time_s,
+                })
             }
             Err(rejection) => {
-                self.rejected += 1;
                 if self.rejections.len() < MAX_LISTED_REJECTIONS {
                     self.rejections.push(pb::SampleRejection {
                         index,
@@ -92,72 +94,26 @@ impl GazeValidator {
         }
     }
 
-    fn verdict(&mut self, s: &pb::GazeSample) -> Result<GazePoint, Rejection> {
-        let t = s.tracker_time_s;
-        if !t.is_finite() {
-            return Err(Rejection::new(
-                "tracker_time_s",
-                format!("{t} is not finite"),
-            ));
-        }
-        if let Some(last) = self.last_time_s.filter(|&last| t < last) {
-            return Err(Rejection::new(
-                "tracker_time_s",
-                format!(
-                    "decreases from {last} to {t}: timestamps must not go backwards within a stream or batch"
-                ),
-            ));
-        }
-        // The time is good: later samples are ordered against it even if this one fails below.
-        self.last_time_s = Some(t);
-        let v = s.validity;
-        if !(0.0..=1.0).contains(&v) {
-            return Err(Rejection::new(
-                "validity",
-                format!("{v} is outside [0, 1] (or NaN)"),
-            ));
-        }
-        if v == 0.0 {
-            return Err(Rejection::new(
-                "validity",
-                "is 0: the tracker marks the sample invalid (blink or track loss); not used",
-            ));
-        }
-        for (field, c) in [("x", s.x), ("y", s.y)] {
-            if !c.is_finite() {
-                return Err(Rejection::new(field, format!("{c} is not finite")));
-            }
-            if !(MIN_COORD..=MAX_COORD).contains(&c) {
-                return Err(Rejection::new(
-                    field,
-                    format!(
-                        "{c} is outside [{MIN_COORD}, {MAX_COORD}] (normalised screen units; 0..1 is on screen)"
-                    ),
-                ));
-            }
-        }
-        Ok(GazePoint {
-            x: s.x,
-            y: s.y,
-            tracker_time_s: t,
-        })
+    /// Samples rejected so far for one rule.
+    pub fn rejected_for(&self, kind: RejectKind) -> u64 {
+        self.rules.rejected_for(kind)
     }
 
     /// Samples accepted so far.
     pub fn accepted(&self) -> u64 {
-        self.accepted
+        self.rules.accepted()
     }
 
     /// Samples rejected so far.
     pub fn rejected(&self) -> u64 {
-        self.rejected
+        self.rules.rejected()
     }
 
     /// The summary StreamGaze answers with.
     pub fn into_summary(self) -> pb::StreamGazeSummary {
         pb::StreamGazeSummary {
-            accepted: self.accepted,
-            rejected: self.rejected,
+            accepted: self.rules.accepted(),
+            rejected: self.rules.rejected(),
             rejections: self.rejections,
             last_accepted_time_s: self.last_accepted_time_s,
         }
@@ -166,8 +122,8 @@ impl GazeValidator {
     /// The response PushGaze answers with.
     pub fn into_push_response(self) -> pb::PushGazeResponse {
         pb::PushGazeResponse {
-            accepted: self.accepted,
-            rejected: self.rejected,
+            accepted: self.rules.accepted(),
+            rejected: self.rules.rejected(),
             rejections: self.rejections,
             last_accepted_time_s: self.last_accepted_time_s,
         }
@@ -245,6 +201,22 @@ mod tests {
             sum.rejections[6]
         );
         assert_eq!(sum.last_accepted_time_s, 0.3);
+    }
+
+    #[test]
+    fn a_wild_timestamp_does_not_block_the_stream() {
+        let mut v = GazeValidator::new();
+        assert!(v.check(&s(10.0, 0.5, 0.5, 1.0)).is_ok());
+        assert_eq!(
+            field(v.check(&s(1e9, 0.5, 0.5, 1.0))),
+            Some("tracker_time_s")
+        );
+        assert!(v.check(&s(10.001, 0.5, 0.5, 1.0)).is_ok());
+        assert_eq!(v.rejected_for(RejectKind::TimeJump), 1);
+        let sum = v.into_summary();
+        assert_eq!((sum.accepted, sum.rejected), (2, 1));
+        assert_eq!(sum.rejections[0].index, 1);
+        assert_eq!(sum.last_accepted_time_s, 10.001);
     }
 
     #[test]

@@ -75,7 +75,10 @@ pub async fn run(
         })
     })
     .await??;
-    let shared = Arc::new(Shared::new(scene, config.gaze_max_age, config.frame_buffer));
+    let shared = Arc::new(
+        Shared::new(scene, config.gaze_max_age, config.frame_buffer)
+            .with_gaze_processing(config.gaze_processing),
+    );
     let frame_loop = FrameLoop::spawn(sim, Arc::clone(&shared), config.summary_interval)?;
     let (trigger, stop) = shutdown::channel();
     let service = FovealService::new(Arc::clone(&shared), frame_loop.commands(), stop.clone());

@@ -8,6 +8,7 @@ use std::sync::{Arc, mpsc};
 use std::time::{Duration, Instant};
 
 use foveal_engine::Simulation;
+use foveal_gaze::validate::RejectKind;
 use foveal_proto::pb;
 use tokio::sync::oneshot;
 use tokio_stream::wrappers::ReceiverStream;
@@ -64,11 +65,17 @@ impl pb::foveal_server::Foveal for FovealService {
             };
             match next {
                 Ok(Some(sample)) => match validator.check(&sample) {
-                    Ok(p) => {
-                        self.shared.fixation.store(p.x, p.y, Instant::now());
+                    Ok(_) => {
+                        let s = gaze::from_pb(&sample);
+                        self.shared.fixation.push([&s], Instant::now());
                         self.shared.metrics.gaze(1, 0);
                     }
                     Err(r) => {
+                        if r.kind == RejectKind::Missing {
+                            // A blink or track loss: not gaze, but the processing must know.
+                            let s = gaze::from_pb(&sample);
+                            self.shared.fixation.push([&s], Instant::now());
+                        }
                         self.shared.metrics.gaze(0, 1);
                         tracing::debug!(?peer, field = r.field, reason = %r.reason, "gaze sample rejected");
                     }
@@ -98,14 +105,19 @@ impl pb::foveal_server::Foveal for FovealService {
         let req = request.into_inner();
         gaze::check_batch_size(req.samples.len()).map_err(Status::invalid_argument)?;
         let mut validator = GazeValidator::new();
-        // Only the newest good sample can matter to a frame; earlier ones are validated and counted.
-        let newest = req
+        // Every accepted sample (and every missing one, which marks track loss) goes through the
+        // online processing in order, under one lock.
+        let usable: Vec<_> = req
             .samples
             .iter()
-            .filter_map(|sample| validator.check(sample).ok())
-            .last();
-        if let Some(p) = newest {
-            self.shared.fixation.store(p.x, p.y, received);
+            .filter(|sample| match validator.check(sample) {
+                Ok(_) => true,
+                Err(r) => r.kind == RejectKind::Missing,
+            })
+            .map(gaze::from_pb)
+            .collect();
+        if !usable.is_empty() {
+            self.shared.fixation.push(&usable, received);
         }
         self.shared
             .metrics

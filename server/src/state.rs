@@ -63,6 +63,13 @@ impl Shared {
         }
     }
 
+    /// The same state with this online gaze processing (assumed valid).
+    #[must_use]
+    pub fn with_gaze_processing(mut self, config: foveal_gaze::online::ProcessorConfig) -> Self {
+        self.fixation = FixationCell::with_config(config);
+        self
+    }
+
     /// The scene in force.
     pub fn scene(&self) -> Arc<Scene> {
         Arc::clone(&self.scene.read().unwrap_or_else(PoisonError::into_inner))

@@ -8,143 +8,29 @@
 use std::path::{Path, PathBuf};
 
 use foveal_engine::Fixation;
+use foveal_gaze::csv::CsvGazeReader;
+use foveal_gaze::viewer::Viewer;
 
-/// Screen of the recorded traces (DESIGN.md; `shared/data/gaze/README.md`): 1920x1080 px, origin
-/// top-left.
-pub const RECORDED_SCREEN_PX: [f64; 2] = [1920.0, 1080.0];
-
-/// splitmix64: a tiny, well-mixed generator, enough for gaze scripts (the engine has its own PRNG
-/// for scenes; keeping them apart means a script change never changes a scene).
+/// The scripted viewer of `foveal-gaze` (the same one `foveal gaze saccades` streams), asked for
+/// the fixation at each frame's start.
 #[derive(Debug, Clone)]
-pub struct SplitMix64(u64);
-
-impl SplitMix64 {
-    /// A generator whose whole sequence is fixed by `seed`.
-    pub fn new(seed: u64) -> Self {
-        Self(seed)
-    }
-
-    /// Next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    pub fn next_f64(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-
-    /// Uniform in [lo, hi).
-    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next_f64()
-    }
-}
-
-/// One segment of a gaze script: hold still at `to` (fixation) or move from `from` to `to` (saccade).
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Segment {
-    start_s: f64,
-    end_s: f64,
-    from: [f64; 2],
-    to: [f64; 2],
-}
-
-/// A scripted viewer: fixations of 150-400 ms (uniform) at uniformly random points of the central
-/// 70% of the screen, joined by saccades whose duration follows the main sequence
-/// (about 21 ms + 2.2 ms per degree of amplitude; here 20-60 ms by on-screen distance). During a
-/// saccade the reported gaze moves linearly, as a tracker's samples do.
-#[derive(Debug, Clone)]
-pub struct ScriptedGaze {
-    rng: SplitMix64,
-    segments: Vec<Segment>,
-}
-
-/// Fixation durations of the script, seconds (reading and scene viewing: 150-400 ms).
-pub const FIXATION_S: (f64, f64) = (0.150, 0.400);
-/// Fixation targets lie in [MARGIN, 1 - MARGIN] of both normalised screen axes.
-const MARGIN: f64 = 0.15;
+pub struct ScriptedGaze(Viewer);
 
 impl ScriptedGaze {
     /// A script fixed by `seed`.
     pub fn new(seed: u64) -> Self {
-        let mut rng = SplitMix64::new(seed ^ 0x6A5E_5EED_0000_0001);
-        let p = [
-            rng.range(MARGIN, 1.0 - MARGIN),
-            rng.range(MARGIN, 1.0 - MARGIN),
-        ];
-        let d = rng.range(FIXATION_S.0, FIXATION_S.1);
-        Self {
-            rng,
-            segments: vec![Segment {
-                start_s: 0.0,
-                end_s: d,
-                from: p,
-                to: p,
-            }],
-        }
-    }
-
-    fn extend_to(&mut self, t: f64) {
-        while let Some(&last) = self.segments.last() {
-            if last.end_s > t {
-                break;
-            }
-            let from = last.to;
-            let to = [
-                self.rng.range(MARGIN, 1.0 - MARGIN),
-                self.rng.range(MARGIN, 1.0 - MARGIN),
-            ];
-            // Normalised distance 0..1 maps to ~0..40 degrees on a desktop display.
-            let amplitude = (to[0] - from[0]).hypot(to[1] - from[1]);
-            let saccade = (0.020 + 0.040 * amplitude.min(1.0)).min(0.060);
-            let fix = self.rng.range(FIXATION_S.0, FIXATION_S.1);
-            let s0 = last.end_s;
-            self.segments.push(Segment {
-                start_s: s0,
-                end_s: s0 + saccade,
-                from,
-                to,
-            });
-            self.segments.push(Segment {
-                start_s: s0 + saccade,
-                end_s: s0 + saccade + fix,
-                from: to,
-                to,
-            });
-        }
+        Self(Viewer::new(seed))
     }
 
     /// The gaze at time `t` (seconds, non-decreasing across calls is fastest but not required).
     pub fn at(&mut self, t: f64) -> Fixation {
-        self.extend_to(t);
-        let i = self
-            .segments
-            .partition_point(|s| s.end_s <= t)
-            .min(self.segments.len() - 1);
-        let s = self.segments[i];
-        let u = if s.end_s > s.start_s {
-            ((t - s.start_s) / (s.end_s - s.start_s)).clamp(0.0, 1.0)
-        } else {
-            1.0
-        };
-        Fixation::at(
-            s.from[0] + (s.to[0] - s.from[0]) * u,
-            s.from[1] + (s.to[1] - s.from[1]) * u,
-        )
+        let g = self.0.at(t);
+        Fixation::at(g.x, g.y)
     }
 
     /// Fixation durations (seconds) of the script up to time `t`: for checking the script.
     pub fn fixation_durations(&mut self, t: f64) -> Vec<f64> {
-        self.extend_to(t);
-        self.segments
-            .iter()
-            .filter(|s| s.from == s.to && s.end_s <= t)
-            .map(|s| s.end_s - s.start_s)
-            .collect()
+        self.0.fixation_durations(t)
     }
 }
 
@@ -159,15 +45,8 @@ pub enum GazeError {
         /// The cause.
         source: std::io::Error,
     },
-    /// The header is not `t_s,xpos,ypos[,ps]`.
-    #[error("gaze trace {path}: expected a header `t_s,xpos,ypos,ps`, found {found:?}")]
-    Header {
-        /// The file.
-        path: PathBuf,
-        /// The header line seen (or empty).
-        found: String,
-    },
-    /// A field is not a number, or time goes backwards.
+    /// A line does not parse (bad header, a field that is not a number, no screen size for
+    /// pixel gaze), or time goes backwards.
     #[error("gaze trace {path}, line {line}: {what}")]
     Line {
         /// The file.
@@ -185,8 +64,9 @@ pub enum GazeError {
     },
 }
 
-/// A recorded trace: `t_s,xpos,ypos,ps` samples, gaze in pixels of a 1920x1080 screen, empty fields
-/// for missing samples (blinks, track loss). Replayed in a loop when the study outlasts it.
+/// A recorded trace, read by the gaze crate's CSV reader: `t_s,xpos,ypos[,ps]` in pixels of the
+/// screen the file declares (`# screen 1920x1080 px`), or normalised `t_s,x,y[,validity]`; empty
+/// fields for missing samples (blinks, track loss). Replayed in a loop when the study outlasts it.
 #[derive(Debug, Clone)]
 pub struct RecordedGaze {
     /// Valid samples: time (s, from the first sample) and normalised position.
@@ -205,57 +85,31 @@ impl RecordedGaze {
         Self::parse(&text, path)
     }
 
-    /// Parse the text of a samples CSV (`path` only names the source in errors).
+    /// Parse the text of a samples CSV (`path` only names the source in errors). The first bad
+    /// line is an error: a study must not run on a silently shortened trace.
     pub fn parse(text: &str, path: &Path) -> Result<Self, GazeError> {
-        let mut lines = text
-            .lines()
-            .enumerate()
-            .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
-        let header = lines.next().map(|(_, l)| l.trim()).unwrap_or_default();
-        let cols: Vec<&str> = header.split(',').map(str::trim).collect();
-        if cols.len() < 3 || cols[0] != "t_s" || cols[1] != "xpos" || cols[2] != "ypos" {
-            return Err(GazeError::Header {
-                path: path.to_owned(),
-                found: header.to_owned(),
-            });
-        }
-        let line_err = |line: usize, what: String| GazeError::Line {
-            path: path.to_owned(),
-            line: line + 1,
-            what,
-        };
         let mut samples = Vec::new();
         let mut first_t = None;
         let mut last_t = f64::NEG_INFINITY;
-        for (i, l) in lines {
-            let f: Vec<&str> = l.split(',').map(str::trim).collect();
-            let num = |k: usize| -> Result<Option<f64>, GazeError> {
-                match f.get(k).copied().unwrap_or("") {
-                    "" | "." => Ok(None),
-                    s => s.parse::<f64>().map(Some).map_err(|_| {
-                        line_err(i, format!("field {} is not a number: {s:?}", k + 1))
-                    }),
-                }
-            };
-            let Some(t) = num(0)? else {
-                return Err(line_err(i, "missing time".into()));
-            };
-            if !t.is_finite() || t < last_t {
-                return Err(line_err(
-                    i,
-                    format!("time {t} is not finite or goes backwards"),
-                ));
+        let mut reader = CsvGazeReader::new(text.as_bytes());
+        while let Some(result) = reader.next() {
+            let s = result.map_err(|e| GazeError::Line {
+                path: path.to_owned(),
+                line: e.line(),
+                what: e.to_string(),
+            })?;
+            let line = reader.line();
+            if s.t_s < last_t {
+                return Err(GazeError::Line {
+                    path: path.to_owned(),
+                    line,
+                    what: format!("time {} goes backwards from {last_t}", s.t_s),
+                });
             }
-            last_t = t;
-            let t0 = *first_t.get_or_insert(t);
-            if let (Some(x), Some(y)) = (num(1)?, num(2)?)
-                && x.is_finite()
-                && y.is_finite()
-            {
-                samples.push((
-                    t - t0,
-                    [x / RECORDED_SCREEN_PX[0], y / RECORDED_SCREEN_PX[1]],
-                ));
+            last_t = s.t_s;
+            let t0 = *first_t.get_or_insert(s.t_s);
+            if s.is_valid() {
+                samples.push((s.t_s - t0, [s.x, s.y]));
             }
         }
         let Some(&(t_last, _)) = samples.last() else {
@@ -352,8 +206,7 @@ mod tests {
 
     #[test]
     fn recorded_trace_holds_last_valid_sample_and_loops() {
-        let csv =
-            "# comment\nt_s,xpos,ypos,ps\n0.000,960,540,1\n0.010,,,\n0.020,1920,0,1\n0.030,,,\n";
+        let csv = "# screen 1920x1080 px\nt_s,xpos,ypos,ps\n0.000,960,540,1\n0.010,,,\n0.020,1920,0,1\n0.030,,,\n";
         let g = RecordedGaze::parse(csv, Path::new("mem")).expect("parses");
         assert_eq!(g.len(), 2);
         let f = g.at(0.015).expect("sample");
@@ -371,7 +224,7 @@ mod tests {
         let p = Path::new("mem");
         assert!(matches!(
             RecordedGaze::parse("a,b,c\n", p),
-            Err(GazeError::Header { .. })
+            Err(GazeError::Line { line: 1, .. })
         ));
         assert!(matches!(
             RecordedGaze::parse("t_s,xpos,ypos,ps\n0,x,1,1\n", p),
@@ -382,8 +235,13 @@ mod tests {
             Err(GazeError::Empty { .. })
         ));
         assert!(matches!(
-            RecordedGaze::parse("t_s,xpos,ypos,ps\n1,1,1,1\n0,1,1,1\n", p),
-            Err(GazeError::Line { line: 3, .. })
+            RecordedGaze::parse("# screen 10x10 px\nt_s,xpos,ypos,ps\n1,1,1,1\n0,1,1,1\n", p),
+            Err(GazeError::Line { line: 4, .. })
+        ));
+        // Pixel gaze with no screen declared is an error, not a guess.
+        assert!(matches!(
+            RecordedGaze::parse("t_s,xpos,ypos,ps\n0,1,1,1\n", p),
+            Err(GazeError::Line { line: 2, .. })
         ));
     }
 }

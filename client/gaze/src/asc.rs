@@ -5,7 +5,7 @@
 //! - `SAMPLES GAZE LEFT|RIGHT|LEFT RIGHT ...`: which eyes the sample lines carry.
 //! - sample lines `time_ms x y pupil ...` (monocular) or `time_ms xl yl pl xr yr pr ...`
 //!   (binocular), `.` for a missing value; a missing sample is kept with validity 0. Binocular
-//!   samples average the eyes that are valid.
+//!   samples become what [`AscReader::with_binocular`] says (default: the mean of the valid eyes).
 //! - `SFIX <eye> <start_ms>` and `EFIX <eye> <start_ms> <end_ms> ...`: the tracker's fixations.
 //!   Once any fixation event of the recorded eye has been seen, samples carry
 //!   `fixation: Some(true)` between a fixation's start and end (inclusive) and `Some(false)`
@@ -17,7 +17,7 @@
 
 use std::io::BufRead;
 
-use super::{Eye, GazeSample, Lines, ParseError, ScreenPx, excerpt, parse_finite};
+use super::{Binocular, Eye, GazeSample, Lines, ParseError, ScreenPx, excerpt, parse_finite};
 
 /// Which eyes the sample lines carry.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -57,6 +57,9 @@ pub struct AscReader<R> {
     /// Fixation events of the left and the right eye.
     events: [FixationEvents; 2],
     events_seen: bool,
+    binocular: Binocular,
+    /// The right eye's sample of a [`Binocular::Both`] line, given on the next call.
+    pending: Option<GazeSample>,
 }
 
 impl<R: BufRead> AscReader<R> {
@@ -69,7 +72,16 @@ impl<R: BufRead> AscReader<R> {
             recorded: Recorded::Unknown,
             events: [FixationEvents::default(); 2],
             events_seen: false,
+            binocular: Binocular::default(),
+            pending: None,
         }
+    }
+
+    /// How a binocular recording's eyes become samples (default [`Binocular::Mean`]).
+    #[must_use]
+    pub fn with_binocular(mut self, binocular: Binocular) -> Self {
+        self.binocular = binocular;
+        self
     }
 
     /// Use this screen; it wins over any `DISPLAY_COORDS` in the file.
@@ -101,7 +113,9 @@ impl<R: BufRead> AscReader<R> {
             return Ok(None);
         };
         if first.starts_with(|c: char| c.is_ascii_digit()) {
-            return self.parse_sample(line, &tokens).map(Some);
+            let (sample, second) = self.parse_sample(line, &tokens)?;
+            self.pending = second;
+            return Ok(Some(sample));
         }
         match *first {
             "MSG" => self.parse_msg(line, &tokens)?,
@@ -186,41 +200,72 @@ impl<R: BufRead> AscReader<R> {
         Ok(())
     }
 
-    fn parse_sample(&self, line: usize, tokens: &[&str]) -> Result<GazeSample, ParseError> {
+    /// Whether eye index `eye` (0 left, 1 right; `None` either) is in a fixation at `t_ms`, once
+    /// any fixation event has been seen.
+    fn in_fixation(&self, eye: Option<usize>, t_ms: f64) -> Option<bool> {
+        self.events_seen.then(|| match eye {
+            Some(i) => self.events[i].contains(t_ms),
+            None => self.events.iter().any(|e| e.contains(t_ms)),
+        })
+    }
+
+    fn parse_sample(
+        &self,
+        line: usize,
+        tokens: &[&str],
+    ) -> Result<(GazeSample, Option<GazeSample>), ParseError> {
         let t_ms = parse_finite(line, "time_ms", tokens[0])?;
         let t_s = t_ms / 1000.0;
+        let normalise = |position: Option<(f64, f64)>| -> Result<_, ParseError> {
+            let Some((x_px, y_px)) = position else {
+                return Ok(None);
+            };
+            let screen = self
+                .screen()
+                .ok_or(ParseError::UnknownScreen { line, field: "x" })?;
+            let (x, y) = screen.normalise(x_px, y_px);
+            Ok(Some((x, y, 1.0)))
+        };
+        if self.recorded == Recorded::Both {
+            let left = normalise(position(line, tokens, 1, ("x_left", "y_left"))?)?;
+            let right = normalise(position(line, tokens, 4, ("x_right", "y_right"))?)?;
+            let eye = match self.binocular {
+                Binocular::Left => Some(0),
+                Binocular::Right => Some(1),
+                Binocular::Mean | Binocular::Both => None,
+            };
+            let (first, second) =
+                self.binocular
+                    .samples(t_s, left, right, self.in_fixation(eye, t_ms));
+            // With both eyes given apart, each carries its own eye's fixation flag.
+            let second = second.map(|s| s.with_fixation(self.in_fixation(Some(1), t_ms)));
+            let first = match second {
+                Some(_) => first.with_fixation(self.in_fixation(Some(0), t_ms)),
+                None => first,
+            };
+            return Ok((first, second));
+        }
         let eye = self.eye();
-        let position = match self.recorded {
-            Recorded::Both => {
-                let left = position(line, tokens, 1, ("x_left", "y_left"))?;
-                let right = position(line, tokens, 4, ("x_right", "y_right"))?;
-                match (left, right) {
-                    (Some((xl, yl)), Some((xr, yr))) => Some(((xl + xr) / 2.0, (yl + yr) / 2.0)),
-                    (one, None) | (None, one) => one,
-                }
-            }
-            _ => position(line, tokens, 1, ("x", "y"))?,
+        let fixation = self.in_fixation(
+            match self.recorded {
+                Recorded::Left => Some(0),
+                Recorded::Right => Some(1),
+                Recorded::Unknown | Recorded::Both => None,
+            },
+            t_ms,
+        );
+        let sample = match normalise(position(line, tokens, 1, ("x", "y"))?)? {
+            Some((x, y, validity)) => GazeSample {
+                t_s,
+                x,
+                y,
+                validity,
+                eye,
+                fixation,
+            },
+            None => GazeSample::missing(t_s, eye).with_fixation(fixation),
         };
-        let fixation = self.events_seen.then(|| match self.recorded {
-            Recorded::Left => self.events[0].contains(t_ms),
-            Recorded::Right => self.events[1].contains(t_ms),
-            Recorded::Unknown | Recorded::Both => self.events.iter().any(|e| e.contains(t_ms)),
-        });
-        let Some((x_px, y_px)) = position else {
-            return Ok(GazeSample::missing(t_s, eye).with_fixation(fixation));
-        };
-        let screen = self
-            .screen()
-            .ok_or(ParseError::UnknownScreen { line, field: "x" })?;
-        let (x, y) = screen.normalise(x_px, y_px);
-        Ok(GazeSample {
-            t_s,
-            x,
-            y,
-            validity: 1.0,
-            eye,
-            fixation,
-        })
+        Ok((sample, None))
     }
 }
 
@@ -229,6 +274,9 @@ impl<R: BufRead> Iterator for AscReader<R> {
 
     fn next(&mut self) -> Option<Self::Item> {
         loop {
+            if let Some(sample) = self.pending.take() {
+                return Some(Ok(sample));
+            }
             let (line, text) = match self.lines.next_line()? {
                 Ok((line, text)) => (line, text.to_owned()),
                 Err(err) => return Some(Err(err)),
@@ -370,9 +418,11 @@ mod tests {
                      SFIX R 16\n\
                      16 10 10 1 10 10 1 .....\n";
         let samples = read_ok(input);
+        // Each eye is normalised, then the valid ones averaged.
+        let mean = |a: f64, b: f64| (a / 100.0 + b / 100.0) / 2.0;
         assert_eq!(
             samples[0],
-            GazeSample::valid(0.01, 0.2, 0.3, Eye::Binocular)
+            GazeSample::valid(0.01, mean(10.0, 30.0), mean(20.0, 40.0), Eye::Binocular)
         );
         assert_eq!(
             samples[1],
@@ -380,6 +430,27 @@ mod tests {
         );
         assert_eq!(samples[2], GazeSample::missing(0.014, Eye::Binocular));
         assert_eq!(samples[3].fixation, Some(true));
+        assert_eq!(samples.len(), 4);
+
+        // Both eyes apart: two samples per line, each with its own eye's fixation flag.
+        let both: Vec<_> = AscReader::new(input.as_bytes())
+            .with_binocular(Binocular::Both)
+            .collect::<Result<_, _>>()
+            .expect("parses");
+        assert_eq!(both.len(), 8);
+        assert_eq!(both[0], GazeSample::valid(0.01, 0.1, 0.2, Eye::Left));
+        assert_eq!(both[1], GazeSample::valid(0.01, 0.3, 0.4, Eye::Right));
+        assert_eq!(both[2], GazeSample::missing(0.012, Eye::Left));
+        assert_eq!((both[6].eye, both[6].fixation), (Eye::Left, Some(false)));
+        assert_eq!((both[7].eye, both[7].fixation), (Eye::Right, Some(true)));
+
+        // One chosen eye.
+        let right: Vec<_> = AscReader::new(input.as_bytes())
+            .with_binocular(Binocular::Right)
+            .collect::<Result<_, _>>()
+            .expect("parses");
+        assert_eq!(right[1], GazeSample::valid(0.012, 0.3, 0.4, Eye::Right));
+        assert_eq!(right[3].fixation, Some(true));
     }
 
     #[test]

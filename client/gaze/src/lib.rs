@@ -1,4 +1,9 @@
-//! Gaze input: parsers for eye-tracker recordings and live protocols, and scripted generators.
+//! # foveal-gaze
+//!
+//! The one home of gaze in foveal: the sample type, every parser of recordings and tracker
+//! protocols, the validation the server applies, online filtering and fixation detection, the
+//! seeded generator and the scripted viewer. The client, the server, the study and the fuzz
+//! targets all use this crate, so a rule (or a threshold) lives in one place.
 //!
 //! Everything here is pure and synchronous: parsers take lines (or any [`BufRead`]) and give
 //! [`GazeSample`]s; networking and timing live with the callers.
@@ -9,21 +14,41 @@
 //!   conversion.
 //! - [`ParseError`]: the one error type of every parser; each error names its 1-based line
 //!   number and, where there is one, the field.
-//! - [`csv`]: CSV recordings, in screen pixels (`t_s,xpos,ypos,ps`) or normalised
-//!   (`t_s,x,y[,validity][,fixation]`), and a writer for the normalised form.
-//! - [`asc`]: EyeLink ASC files (samples, `SFIX`/`EFIX` fixation events, display coordinates).
+//! - [`csv`]: CSV recordings, in screen pixels (`t_s,xpos,ypos,ps`, or binocular
+//!   `xpos_left,xpos_right,...`) or normalised (`t_s,x,y[,validity][,fixation]`), and a writer.
+//! - [`asc`]: EyeLink ASC files, monocular and binocular (samples, `SFIX`/`EFIX` events,
+//!   display coordinates).
 //! - [`opengaze`]: the Gazepoint Open Gaze API (XML lines over TCP): handshake commands and a
 //!   record parser.
-//! - [`script`]: deterministic scripted gaze: fixed point, circle, random saccades.
+//! - [`validate`]: the rules a sample must pass before it can steer the scheduler, including
+//!   the limit on timestamp jumps.
+//! - [`geometry`]: normalised screen points as gaze directions in degrees of visual angle.
+//! - [`filter`]: the 1€ filter. [`detect`]: online I-VT and I-DT fixation detection.
+//! - [`clock`]: per-source clock offset, so a sample's age includes its delay on the way.
+//! - [`online`]: the server's per-source processing: eyes combined, filter, detector, track loss.
+//! - [`fixation_list`]: fixation lists as CSV (`eye,start_s,end_s,x_px,y_px`).
+//! - [`agreement`]: event-level agreement of two fixation lists (Hooge et al. 2018).
+//! - [`rng`], [`viewer`]: the one seeded generator and the one scripted viewer.
+//! - [`script`]: deterministic scripted gaze at a rate: fixed point, circle, the viewer's saccades.
 
 use std::io::{self, BufRead};
 
 use thiserror::Error;
 
+pub mod agreement;
 pub mod asc;
+pub mod clock;
 pub mod csv;
+pub mod detect;
+pub mod filter;
+pub mod fixation_list;
+pub mod geometry;
+pub mod online;
 pub mod opengaze;
+pub mod rng;
 pub mod script;
+pub mod validate;
+pub mod viewer;
 
 #[cfg(test)]
 mod recording_tests;
@@ -104,52 +129,62 @@ impl GazeSample {
     }
 }
 
-impl From<Eye> for foveal_proto::pb::Eye {
-    fn from(eye: Eye) -> Self {
-        match eye {
-            Eye::Unspecified => Self::Unspecified,
-            Eye::Left => Self::Left,
-            Eye::Right => Self::Right,
-            Eye::Binocular => Self::Binocular,
-        }
-    }
+/// One eye's reading at one instant: normalised (x, y) and validity, or `None` when the eye was
+/// not tracked (blink, track loss).
+pub type EyeReading = Option<(f64, f64, f32)>;
+
+/// How a binocular recording becomes samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Binocular {
+    /// One [`Eye::Binocular`] sample: the mean of the valid eyes (the one valid eye alone when the
+    /// other is missing), missing when neither is valid. The usual choice: averaging halves the
+    /// variance of uncorrelated noise, and a one-eyed blink does not lose the sample.
+    #[default]
+    Mean,
+    /// One [`Eye::Left`] sample: the left eye only.
+    Left,
+    /// One [`Eye::Right`] sample: the right eye only.
+    Right,
+    /// Two samples per instant, left then right, each tagged with its eye: the receiver combines
+    /// them (the server does, online).
+    Both,
 }
 
-impl From<foveal_proto::pb::Eye> for Eye {
-    fn from(eye: foveal_proto::pb::Eye) -> Self {
-        match eye {
-            foveal_proto::pb::Eye::Unspecified => Self::Unspecified,
-            foveal_proto::pb::Eye::Left => Self::Left,
-            foveal_proto::pb::Eye::Right => Self::Right,
-            foveal_proto::pb::Eye::Binocular => Self::Binocular,
-        }
-    }
-}
-
-impl From<GazeSample> for foveal_proto::pb::GazeSample {
-    fn from(s: GazeSample) -> Self {
-        Self {
-            tracker_time_s: s.t_s,
-            x: s.x,
-            y: s.y,
-            validity: s.validity,
-            eye: foveal_proto::pb::Eye::from(s.eye) as i32,
-            fixation: s.fixation,
-        }
-    }
-}
-
-impl From<&foveal_proto::pb::GazeSample> for GazeSample {
-    /// Unknown eye values become [`Eye::Unspecified`].
-    fn from(s: &foveal_proto::pb::GazeSample) -> Self {
-        let eye = foveal_proto::pb::Eye::try_from(s.eye).map_or(Eye::Unspecified, Eye::from);
-        Self {
-            t_s: s.tracker_time_s,
-            x: s.x,
-            y: s.y,
-            validity: s.validity,
-            eye,
-            fixation: s.fixation,
+impl Binocular {
+    /// The sample(s) of one binocular instant: the first always, the second only for
+    /// [`Binocular::Both`]. `fixation` is the source's flag, copied to each.
+    #[must_use]
+    pub fn samples(
+        self,
+        t_s: f64,
+        left: EyeReading,
+        right: EyeReading,
+        fixation: Option<bool>,
+    ) -> (GazeSample, Option<GazeSample>) {
+        let one = |reading: EyeReading, eye| match reading {
+            Some((x, y, validity)) => GazeSample {
+                t_s,
+                x,
+                y,
+                validity,
+                eye,
+                fixation,
+            },
+            None => GazeSample::missing(t_s, eye).with_fixation(fixation),
+        };
+        match self {
+            Self::Mean => {
+                let mean = match (left, right) {
+                    (Some((xl, yl, vl)), Some((xr, yr, vr))) => {
+                        Some(((xl + xr) / 2.0, (yl + yr) / 2.0, f32::midpoint(vl, vr)))
+                    }
+                    (one, None) | (None, one) => one,
+                };
+                (one(mean, Eye::Binocular), None)
+            }
+            Self::Left => (one(left, Eye::Left), None),
+            Self::Right => (one(right, Eye::Right), None),
+            Self::Both => (one(left, Eye::Left), Some(one(right, Eye::Right))),
         }
     }
 }
@@ -438,28 +473,6 @@ mod tests {
         assert!(ScreenPx::new(f64::NAN, 1080.0).is_none());
         assert!(ScreenPx::new(f64::INFINITY, 1080.0).is_none());
         assert!(ScreenPx::from_corners(10.0, 0.0, 5.0, 100.0).is_none());
-    }
-
-    #[test]
-    fn samples_convert_to_and_from_the_protocol() {
-        let sample = GazeSample {
-            t_s: 12.5,
-            x: 0.25,
-            y: 0.75,
-            validity: 0.5,
-            eye: Eye::Right,
-            fixation: Some(false),
-        };
-        let pb = foveal_proto::pb::GazeSample::from(sample);
-        assert_eq!(pb.tracker_time_s, 12.5);
-        assert_eq!(pb.eye, foveal_proto::pb::Eye::Right as i32);
-        assert_eq!(pb.fixation, Some(false));
-        assert_eq!(GazeSample::from(&pb), sample);
-        for eye in [Eye::Unspecified, Eye::Left, Eye::Right, Eye::Binocular] {
-            assert_eq!(Eye::from(foveal_proto::pb::Eye::from(eye)), eye);
-        }
-        let unknown = foveal_proto::pb::GazeSample { eye: 99, ..pb };
-        assert_eq!(GazeSample::from(&unknown).eye, Eye::Unspecified);
     }
 
     #[test]

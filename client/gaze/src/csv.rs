@@ -8,12 +8,22 @@
 //! - **normalised** (this crate's own): `t_s,x,y[,validity][,fixation]`: seconds, gaze
 //!   normalised 0..1, confidence 0..1 (default 1), fixation flag `1`/`0`/`true`/`false`/empty.
 //!
+//! - **binocular**: either layout with one column per eye, `_left` and `_right` appended:
+//!   `t_s,xpos_left,xpos_right,ypos_left,ypos_right[,ps_left,ps_right]` (an EyeLink binocular
+//!   export) or `t_s,x_left,y_left,x_right,y_right[,validity_left,validity_right][,fixation]`.
+//!   How the eyes become samples is [`CsvGazeReader::with_binocular`] (default: the mean of the
+//!   valid eyes). A file with one side only (`xpos_left,ypos_left`) is monocular, tagged with
+//!   that eye.
+//!
 //! Lines starting with `#` are comments. An empty `x`/`y` (or `xpos`/`ypos`) field is a
 //! missing sample: it is kept, with validity 0 (see [`GazeSample`]).
 
 use std::io::{self, BufRead, Write};
 
-use super::{Eye, GazeSample, Lines, ParseError, ScreenPx, excerpt, parse_finite, parse_validity};
+use super::{
+    Binocular, Eye, EyeReading, GazeSample, Lines, ParseError, ScreenPx, excerpt, parse_finite,
+    parse_validity,
+};
 
 /// Which of the two CSV layouts an input uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -27,15 +37,25 @@ pub enum CsvFormat {
 /// The header [`write_normalised`] writes.
 pub const NORMALISED_HEADER: &str = "t_s,x,y,validity,fixation";
 
+/// Columns of one eye: position and optional validity, with the names errors use.
+#[derive(Debug, Clone, Copy)]
+struct EyeColumns {
+    x: usize,
+    y: usize,
+    validity: Option<usize>,
+    names: [&'static str; 3],
+}
+
 /// Column positions found in a header.
 #[derive(Debug, Clone)]
 struct Columns {
     format: CsvFormat,
     count: usize,
     t: usize,
-    x: usize,
-    y: usize,
-    validity: Option<usize>,
+    /// One eye (monocular), or left and right.
+    eyes: Vec<EyeColumns>,
+    /// The eye a monocular file names by its column suffix, if it does.
+    named_eye: Option<Eye>,
     fixation: Option<usize>,
 }
 
@@ -57,50 +77,72 @@ impl Columns {
                 line,
                 field: "header",
                 reason: format!(
-                    "no `t_s` column in {:?}; expected `t_s,xpos,ypos[,ps]` or \
-                     `t_s,x,y[,validity][,fixation]`",
+                    "no `t_s` column in {:?}; expected `t_s,xpos,ypos[,ps]`, \
+                     `t_s,x,y[,validity][,fixation]` or their `_left`/`_right` forms",
                     excerpt(header)
                 ),
             });
         };
-        let (format, x, y) = match (find("xpos"), find("ypos"), find("x"), find("y")) {
-            (Some(x), Some(y), _, _) => (CsvFormat::Pixels, x, y),
-            (_, _, Some(x), Some(y)) => (CsvFormat::Normalised, x, y),
-            _ => {
-                return Err(ParseError::Malformed {
-                    line,
-                    field: "header",
-                    reason: format!("no `xpos,ypos` nor `x,y` columns in {:?}", excerpt(header)),
-                });
-            }
+        let eye = |format: CsvFormat, names: [&'static str; 3]| {
+            let (x, y) = (find(names[0])?, find(names[1])?);
+            let validity = match format {
+                CsvFormat::Pixels => None,
+                CsvFormat::Normalised => find(names[2]),
+            };
+            Some(EyeColumns {
+                x,
+                y,
+                validity,
+                names,
+            })
         };
-        let (validity, fixation) = match format {
-            CsvFormat::Pixels => (None, None),
-            CsvFormat::Normalised => (find("validity"), find("fixation")),
+        let layouts = [
+            (
+                CsvFormat::Pixels,
+                ["xpos", "ypos", ""],
+                ["xpos_left", "ypos_left", ""],
+                ["xpos_right", "ypos_right", ""],
+            ),
+            (
+                CsvFormat::Normalised,
+                ["x", "y", "validity"],
+                ["x_left", "y_left", "validity_left"],
+                ["x_right", "y_right", "validity_right"],
+            ),
+        ];
+        let found = layouts.iter().find_map(|&(format, mono, left, right)| {
+            if let Some(mono) = eye(format, mono) {
+                return Some((format, vec![mono], None));
+            }
+            match (eye(format, left), eye(format, right)) {
+                (Some(l), Some(r)) => Some((format, vec![l, r], None)),
+                (Some(l), None) => Some((format, vec![l], Some(Eye::Left))),
+                (None, Some(r)) => Some((format, vec![r], Some(Eye::Right))),
+                (None, None) => None,
+            }
+        });
+        let Some((format, eyes, named_eye)) = found else {
+            return Err(ParseError::Malformed {
+                line,
+                field: "header",
+                reason: format!(
+                    "no `xpos,ypos` nor `x,y` columns (nor their `_left`/`_right` forms) in {:?}",
+                    excerpt(header)
+                ),
+            });
+        };
+        let fixation = match format {
+            CsvFormat::Pixels => None,
+            CsvFormat::Normalised => find("fixation"),
         };
         Ok(Self {
             format,
             count: names.len(),
             t,
-            x,
-            y,
-            validity,
+            eyes,
+            named_eye,
             fixation,
         })
-    }
-
-    fn x_name(&self) -> &'static str {
-        match self.format {
-            CsvFormat::Pixels => "xpos",
-            CsvFormat::Normalised => "x",
-        }
-    }
-
-    fn y_name(&self) -> &'static str {
-        match self.format {
-            CsvFormat::Pixels => "ypos",
-            CsvFormat::Normalised => "y",
-        }
     }
 }
 
@@ -135,22 +177,41 @@ pub struct CsvGazeReader<R> {
     lines: Lines<R>,
     screen_given: Option<ScreenPx>,
     screen_found: Option<ScreenPx>,
-    eye: Eye,
+    eye: Option<Eye>,
+    binocular: Binocular,
     columns: Option<Columns>,
+    /// The right eye's sample of a [`Binocular::Both`] line, given on the next call.
+    pending: Option<GazeSample>,
     stopped: bool,
 }
 
 impl<R: BufRead> CsvGazeReader<R> {
-    /// A reader of `reader`; samples get [`Eye::Unspecified`] unless [`Self::with_eye`] says.
+    /// A reader of `reader`. Samples of a monocular file get [`Eye::Unspecified`] (or the eye
+    /// its column names say) unless [`Self::with_eye`] says; a binocular file gives what
+    /// [`Self::with_binocular`] says.
     pub fn new(reader: R) -> Self {
         Self {
             lines: Lines::new(reader),
             screen_given: None,
             screen_found: None,
-            eye: Eye::Unspecified,
+            eye: None,
+            binocular: Binocular::default(),
             columns: None,
+            pending: None,
             stopped: false,
         }
+    }
+
+    /// How a binocular file's eyes become samples (default [`Binocular::Mean`]).
+    #[must_use]
+    pub fn with_binocular(mut self, binocular: Binocular) -> Self {
+        self.binocular = binocular;
+        self
+    }
+
+    /// Whether the file is binocular, once the header has been read.
+    pub fn is_binocular(&self) -> Option<bool> {
+        self.columns.as_ref().map(|c| c.eyes.len() == 2)
     }
 
     /// Use this screen size for pixel gaze; it wins over any size declared in the input.
@@ -160,10 +221,10 @@ impl<R: BufRead> CsvGazeReader<R> {
         self
     }
 
-    /// Tag every sample with this eye.
+    /// Tag every sample of a monocular file with this eye.
     #[must_use]
     pub fn with_eye(mut self, eye: Eye) -> Self {
-        self.eye = eye;
+        self.eye = Some(eye);
         self
     }
 
@@ -176,16 +237,78 @@ impl<R: BufRead> CsvGazeReader<R> {
     pub fn screen(&self) -> Option<ScreenPx> {
         self.screen_given.or(self.screen_found)
     }
+
+    /// The 1-based number of the line read last (that of the last sample or error given).
+    pub fn line(&self) -> usize {
+        self.lines.line
+    }
 }
 
-/// Parses one data line under `columns`; `screen` converts pixels, `eye` tags the sample.
+/// What a reader needs besides the columns to turn a line into samples.
+#[derive(Debug, Clone, Copy)]
+struct RecordContext {
+    screen: Option<ScreenPx>,
+    eye: Option<Eye>,
+    binocular: Binocular,
+}
+
+/// One eye's reading on a line: `None` for a missing sample (empty position or validity 0).
+fn parse_eye(
+    columns: &Columns,
+    eye: &EyeColumns,
+    screen: Option<ScreenPx>,
+    line: usize,
+    fields: &[&str],
+) -> Result<EyeReading, ParseError> {
+    let get = |index: usize, field: &'static str| {
+        fields
+            .get(index)
+            .copied()
+            .ok_or(ParseError::MissingField { line, field })
+    };
+    let [x_name, y_name, validity_name] = eye.names;
+    let x_text = get(eye.x, x_name)?;
+    let y_text = get(eye.y, y_name)?;
+    let validity_text = match eye.validity {
+        Some(i) => get(i, validity_name)?,
+        None => "",
+    };
+    if x_text.is_empty() || y_text.is_empty() {
+        if !validity_text.is_empty() {
+            parse_validity(line, validity_name, validity_text)?;
+        }
+        return Ok(None);
+    }
+    let x = parse_finite(line, x_name, x_text)?;
+    let y = parse_finite(line, y_name, y_text)?;
+    let validity = if validity_text.is_empty() {
+        1.0
+    } else {
+        parse_validity(line, validity_name, validity_text)?
+    };
+    if validity == 0.0 {
+        return Ok(None);
+    }
+    let (x, y) = match columns.format {
+        CsvFormat::Normalised => (x, y),
+        CsvFormat::Pixels => {
+            let screen = screen.ok_or(ParseError::UnknownScreen {
+                line,
+                field: x_name,
+            })?;
+            screen.normalise(x, y)
+        }
+    };
+    Ok(Some((x, y, validity)))
+}
+
+/// Parses one data line under `columns`: one sample, or two for [`Binocular::Both`].
 fn parse_record(
     columns: &Columns,
-    screen: Option<ScreenPx>,
-    eye: Eye,
+    context: RecordContext,
     line: usize,
     text: &str,
-) -> Result<GazeSample, ParseError> {
+) -> Result<(GazeSample, Option<GazeSample>), ParseError> {
     let fields: Vec<&str> = text.split(',').map(str::trim).collect();
     if fields.len() > columns.count {
         return Err(ParseError::Malformed {
@@ -198,61 +321,49 @@ fn parse_record(
             ),
         });
     }
-    let get = |index: usize, field: &'static str| {
-        fields
-            .get(index)
-            .copied()
-            .ok_or(ParseError::MissingField { line, field })
-    };
-    let t_text = get(columns.t, "t_s")?;
+    let t_text = fields
+        .get(columns.t)
+        .copied()
+        .ok_or(ParseError::MissingField { line, field: "t_s" })?;
     if t_text.is_empty() {
         return Err(ParseError::MissingField { line, field: "t_s" });
     }
     let t_s = parse_finite(line, "t_s", t_text)?;
-    let x_text = get(columns.x, columns.x_name())?;
-    let y_text = get(columns.y, columns.y_name())?;
     let fixation = match columns.fixation {
-        Some(i) => parse_flag(line, "fixation", get(i, "fixation")?)?,
+        Some(i) => {
+            let text = fields.get(i).copied().ok_or(ParseError::MissingField {
+                line,
+                field: "fixation",
+            })?;
+            parse_flag(line, "fixation", text)?
+        }
         None => None,
     };
-    let validity_text = match columns.validity {
-        Some(i) => get(i, "validity")?,
-        None => "",
-    };
-    if x_text.is_empty() || y_text.is_empty() {
-        if !validity_text.is_empty() {
-            parse_validity(line, "validity", validity_text)?;
-        }
-        return Ok(GazeSample::missing(t_s, eye).with_fixation(fixation));
+    let mut readings = [None, None];
+    for (reading, eye) in readings.iter_mut().zip(&columns.eyes) {
+        *reading = parse_eye(columns, eye, context.screen, line, &fields)?;
     }
-    let x = parse_finite(line, columns.x_name(), x_text)?;
-    let y = parse_finite(line, columns.y_name(), y_text)?;
-    let validity = if validity_text.is_empty() {
-        1.0
-    } else {
-        parse_validity(line, "validity", validity_text)?
-    };
-    if validity == 0.0 {
-        return Ok(GazeSample::missing(t_s, eye).with_fixation(fixation));
+    if let [left, right] = readings
+        && columns.eyes.len() == 2
+    {
+        return Ok(context.binocular.samples(t_s, left, right, fixation));
     }
-    let (x, y) = match columns.format {
-        CsvFormat::Normalised => (x, y),
-        CsvFormat::Pixels => {
-            let screen = screen.ok_or(ParseError::UnknownScreen {
-                line,
-                field: columns.x_name(),
-            })?;
-            screen.normalise(x, y)
-        }
+    let eye = context
+        .eye
+        .or(columns.named_eye)
+        .unwrap_or(Eye::Unspecified);
+    let sample = match readings[0] {
+        Some((x, y, validity)) => GazeSample {
+            t_s,
+            x,
+            y,
+            validity,
+            eye,
+            fixation,
+        },
+        None => GazeSample::missing(t_s, eye).with_fixation(fixation),
     };
-    Ok(GazeSample {
-        t_s,
-        x,
-        y,
-        validity,
-        eye,
-        fixation,
-    })
+    Ok((sample, None))
 }
 
 impl<R: BufRead> Iterator for CsvGazeReader<R> {
@@ -260,6 +371,9 @@ impl<R: BufRead> Iterator for CsvGazeReader<R> {
 
     fn next(&mut self) -> Option<Self::Item> {
         loop {
+            if let Some(sample) = self.pending.take() {
+                return Some(Ok(sample));
+            }
             if self.stopped {
                 return None;
             }
@@ -279,8 +393,17 @@ impl<R: BufRead> Iterator for CsvGazeReader<R> {
             }
             match &self.columns {
                 Some(columns) => {
-                    let screen = self.screen_given.or(self.screen_found);
-                    return Some(parse_record(columns, screen, self.eye, line, text));
+                    let context = RecordContext {
+                        screen: self.screen_given.or(self.screen_found),
+                        eye: self.eye,
+                        binocular: self.binocular,
+                    };
+                    return Some(parse_record(columns, context, line, text).map(
+                        |(first, second)| {
+                            self.pending = second;
+                            first
+                        },
+                    ));
                 }
                 None => match Columns::from_header(line, text) {
                     Ok(columns) => self.columns = Some(columns),
@@ -448,6 +571,72 @@ mod tests {
                 GazeSample::missing(12.0, Eye::Unspecified).with_fixation(Some(false)),
             ]
         );
+    }
+
+    #[test]
+    fn binocular_eyelink_export_gives_every_sample() {
+        // The column order of an EyeLink binocular export.
+        let input = "# screen 100x100 px\n\
+                     t_s,xpos_left,xpos_right,ypos_left,ypos_right,ps_left,ps_right\n\
+                     0.000,10,30,20,40,900,910\n\
+                     0.001,,30,,40,0,910\n\
+                     0.002,,,,,0,0\n";
+        let mut reader = CsvGazeReader::new(input.as_bytes());
+        let mean: Vec<_> = reader.by_ref().collect::<Result<_, _>>().expect("parses");
+        assert_eq!(reader.is_binocular(), Some(true));
+        assert_eq!(
+            mean,
+            vec![
+                GazeSample::valid(0.0, (0.1 + 0.3) / 2.0, (0.2 + 0.4) / 2.0, Eye::Binocular),
+                GazeSample::valid(0.001, 0.3, 0.4, Eye::Binocular),
+                GazeSample::missing(0.002, Eye::Binocular),
+            ]
+        );
+        let both = read_ok(CsvGazeReader::new(input.as_bytes()).with_binocular(Binocular::Both));
+        assert_eq!(
+            both,
+            vec![
+                GazeSample::valid(0.0, 0.1, 0.2, Eye::Left),
+                GazeSample::valid(0.0, 0.3, 0.4, Eye::Right),
+                GazeSample::missing(0.001, Eye::Left),
+                GazeSample::valid(0.001, 0.3, 0.4, Eye::Right),
+                GazeSample::missing(0.002, Eye::Left),
+                GazeSample::missing(0.002, Eye::Right),
+            ]
+        );
+        let left = read_ok(CsvGazeReader::new(input.as_bytes()).with_binocular(Binocular::Left));
+        assert_eq!(left[0], GazeSample::valid(0.0, 0.1, 0.2, Eye::Left));
+        assert!(!left[1].is_valid());
+    }
+
+    #[test]
+    fn binocular_normalised_with_validity_and_one_sided_files() {
+        let input = "t_s,x_left,y_left,validity_left,x_right,y_right,validity_right,fixation\n\
+                     1.0,0.25,0.5,0.5,0.75,0.5,1,1\n\
+                     1.1,0.25,0.5,0,0.75,0.5,1,0\n\
+                     1.2,0.25,0.5,2,0.75,0.5,1,0\n";
+        let got = read_all(input);
+        assert_eq!(
+            got[0].as_ref().ok(),
+            Some(
+                &GazeSample {
+                    validity: 0.75,
+                    ..GazeSample::valid(1.0, 0.5, 0.5, Eye::Binocular)
+                }
+                .with_fixation(Some(true))
+            )
+        );
+        assert_eq!(
+            got[1].as_ref().ok(),
+            Some(&GazeSample::valid(1.1, 0.75, 0.5, Eye::Binocular).with_fixation(Some(false)))
+        );
+        let err = got[2].as_ref().expect_err("bad validity");
+        assert_eq!((err.line(), err.field()), (4, Some("validity_left")));
+        // One side only: monocular, tagged with that eye.
+        let right = read_ok(CsvGazeReader::new(
+            "t_s,x_right,y_right\n0,0.5,0.5\n".as_bytes(),
+        ));
+        assert_eq!(right, vec![GazeSample::valid(0.0, 0.5, 0.5, Eye::Right)]);
     }
 
     #[test]
