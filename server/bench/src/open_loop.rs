@@ -34,7 +34,9 @@ use foveal_engine::{
 };
 
 use crate::error::BenchError;
-use crate::gaze::{ScriptedGaze, SplitMix64};
+use foveal_gaze::rng::SplitMix64;
+
+use crate::gaze::ScriptedGaze;
 use crate::runner::InstantClock;
 use crate::stats::MeanCi;
 
