@@ -214,7 +214,7 @@ fn recorded_trace_drives_a_study() {
     let out = out_dir("recorded");
     std::fs::create_dir_all(&out).expect("dir");
     let trace = out.join("trace.csv");
-    let mut csv = String::from("# synthetic\nt_s,xpos,ypos,ps\n");
+    let mut csv = String::from("# synthetic trace, screen 1920x1080 px\nt_s,xpos,ypos,ps\n");
     for i in 0..200 {
         let t = f64::from(i) * 0.001;
         if i % 50 == 10 {
