@@ -167,21 +167,21 @@ fn run(
         }
 
         let start = Instant::now();
-        let fixation = shared.fixation.resolve(start, shared.gaze_max_age);
-        let report = sim.step(Some(fixation.fixation), &clock);
+        let resolved = shared.fixation.resolve(start, shared.gaze_max_age);
+        let report = sim.step(Some(resolved.fixation), &clock);
         let step = start.elapsed();
-        let frame = convert::frame_to_pb(report, offset + report.index, &fixation);
+        // The frame reports what the step used (the engine's record), not what was handed in.
+        let used = convert::fixation_used(report, &resolved);
+        let frame = convert::frame_to_pb(report, offset + report.index, &used);
         summary.record(report, step);
         let poses = shared
             .fanout
             .wants_poses()
             .then(|| Arc::new(convert::poses(&sim)));
-        shared
-            .metrics
-            .frame_done(convert::fixation_to_pb(&fixation));
+        let end = Instant::now();
+        shared.metrics.frame_done(used, end);
         shared.fanout.publish(FrameMsg { frame, poses });
 
-        let end = Instant::now();
         deadline += period;
         if end > deadline {
             shared.metrics.overrun();

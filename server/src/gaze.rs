@@ -143,6 +143,12 @@ impl GazeValidator {
         })
     }
 
+    /// Pass over the next sample without looking at it (dropped by the rate limit), so that later
+    /// rejections keep their index in the stream.
+    pub fn skip(&mut self) {
+        self.next_index += 1;
+    }
+
     /// Samples accepted so far.
     pub fn accepted(&self) -> u64 {
         self.accepted
@@ -160,6 +166,7 @@ impl GazeValidator {
             rejected: self.rejected,
             rejections: self.rejections,
             last_accepted_time_s: self.last_accepted_time_s,
+            rate_limited: 0,
         }
     }
 
@@ -170,6 +177,7 @@ impl GazeValidator {
             rejected: self.rejected,
             rejections: self.rejections,
             last_accepted_time_s: self.last_accepted_time_s,
+            rate_limited: 0,
         }
     }
 }
