@@ -14,12 +14,10 @@ use std::fmt;
 use std::time::Duration;
 
 use foveal_proto::pb;
-use foveal_proto::pb::foveal_client::FovealClient;
 use tokio::sync::mpsc;
 use tokio::task::JoinHandle;
 use tokio::time::Instant;
 use tokio_stream::wrappers::ReceiverStream;
-use tonic::transport::Channel;
 
 use crate::ClientError;
 use crate::gaze::GazeSample;
@@ -122,7 +120,7 @@ enum Inner {
     },
     Push {
         /// Boxed: a client is large next to the stream's two handles.
-        client: Box<FovealClient<Channel>>,
+        client: Box<crate::Client>,
         source: String,
         batch: usize,
         buf: Vec<pb::GazeSample>,
@@ -161,7 +159,7 @@ impl GazeSender {
     /// # Panics
     /// Under [`Transport::Stream`], when called outside a tokio runtime.
     pub fn open(
-        client: FovealClient<Channel>,
+        client: crate::Client,
         transport: Transport,
         source: &str,
     ) -> Result<Self, ClientError> {

@@ -505,6 +505,32 @@ mod tests {
     }
 
     #[test]
+    fn a_mask_applies_exactly_its_fields_and_the_log_names_them() {
+        let c = SimConfig::default();
+        let paths = |p: &[&str]| p.iter().map(|&s| s.to_owned()).collect::<Vec<_>>();
+        let req = pb::SceneConfig {
+            seed: 0,
+            min_speed: 0.0,
+            bodies: 7,
+            ..Default::default()
+        };
+        let (m, rate) =
+            merge_masked(&c, 60.0, &req, &paths(&["seed", "min_speed"])).expect("valid");
+        assert_eq!((m.scene.seed, m.scene.min_speed), (0, 0.0));
+        assert_eq!(
+            m.scene.bodies, c.scene.bodies,
+            "unlisted fields keep their value"
+        );
+        assert_eq!(rate, 60.0);
+        let changed = changed_fields(&scene_config_to_pb(&c, 60.0), &scene_config_to_pb(&m, rate));
+        assert_eq!(changed, ["seed", "min_speed"]);
+        let e = merge_masked(&c, 60.0, &req, &paths(&["budget"])).expect_err("no budget set");
+        assert_eq!(e.field, "budget");
+        let e = merge_masked(&c, 60.0, &req, &paths(&["colour"])).expect_err("unknown path");
+        assert_eq!(e.field, "update_mask");
+    }
+
+    #[test]
     fn merge_errors_name_the_field() {
         let c = SimConfig::default();
         let field = |req: pb::SceneConfig| merge_scene_config(&c, 60.0, &req).map_err(|e| e.field);

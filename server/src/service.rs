@@ -243,7 +243,7 @@ impl pb::foveal_server::Foveal for FovealService {
                 Status::invalid_argument(format!("ConfigureRequest.config: {e}"))
             })?;
         let changed = convert::changed_fields(
-            &current.description.config.clone().unwrap_or_default(),
+            &current.description.config.unwrap_or_default(),
             &convert::scene_config_to_pb(&config, rate),
         );
         // An empty change list is a restart of the same scene (admins use it to replay a run).

@@ -22,7 +22,9 @@ pub struct Summary {
     gaze_at_start: u64,
 }
 
-/// The `q`-quantile (0..=1) of sorted values by nearest rank; 0 for none.
+/// The `q`-quantile (0..=1) of sorted values: the element at index round(q·(n−1)), i.e. the order
+/// statistic nearest the linear-interpolation position (for p99 of 100 values, the 99th); 0 for
+/// none.
 pub fn quantile(sorted: &[u64], q: f64) -> u64 {
     if sorted.is_empty() {
         return 0;
