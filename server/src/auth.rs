@@ -340,7 +340,9 @@ mod tests {
         );
         assert_eq!(code(call("/grpc.health.v1.Health/Check", None)), Ok);
         assert_eq!(
-            call("/foveal.v1.Foveal/PushGaze", Some(A)).ok().map(|c| c.role),
+            call("/foveal.v1.Foveal/PushGaze", Some(A))
+                .ok()
+                .map(|c| c.role),
             Some(Some(Role::Admin))
         );
         // Authentication off: everything open.
