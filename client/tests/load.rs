@@ -64,3 +64,35 @@ async fn a_short_load_keeps_the_rate_and_loses_no_accepted_sample() {
         .await
         .expect("clean stop with stalled watchers gone");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn samples_over_the_rate_limit_show_in_the_send_summary() {
+    use foveal_client::sender::{GazeSender, Transport};
+    let mut config = small_config(40, 30.0);
+    config.limits.max_gaze_rate_hz = 100.0;
+    let server = TestServer::start(config).await;
+    drop(server.channel().await);
+    let client = foveal_client::connect(&server.url())
+        .await
+        .expect("connect");
+    let mut sender = GazeSender::open(client, Transport::Stream, "test:burst").expect("sender");
+    for i in 0..1000u32 {
+        sender
+            .send(foveal_client::gaze::GazeSample::valid(
+                f64::from(i) * 1e-3,
+                0.5,
+                0.5,
+                foveal_client::gaze::Eye::Binocular,
+            ))
+            .await
+            .expect("send");
+    }
+    let summary = sender.finish().await.expect("summary");
+    assert_eq!(
+        summary.accepted + summary.rejected + summary.rate_limited,
+        1000
+    );
+    assert!(summary.rate_limited > 0, "{summary}");
+    assert!(summary.to_string().contains("rate-limited"), "{summary}");
+    server.stop().await.expect("clean stop");
+}
