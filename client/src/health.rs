@@ -9,7 +9,7 @@ use tonic_health::pb::health_client::HealthClient;
 
 pub use tonic_health::pb::health_check_response::ServingStatus;
 
-use crate::{ClientError, endpoint};
+use crate::{ClientError, ConnectOptions, endpoint};
 
 /// The service name of the foveal service in the health registry; `""` asks about the server
 /// as a whole.
@@ -29,7 +29,21 @@ pub async fn check(
     service: &str,
     timeout: Duration,
 ) -> Result<ServingStatus, ClientError> {
-    let channel = crate::open(addr, endpoint(addr, timeout)?.timeout(timeout)).await?;
+    check_with(addr, service, timeout, &ConnectOptions::default()).await
+}
+
+/// [`check`] for a server behind TLS (health needs no token, only the CA).
+///
+/// # Errors
+/// As [`check`], and [`ClientError::InvalidOption`] for `https://` without a usable CA.
+pub async fn check_with(
+    addr: &str,
+    service: &str,
+    timeout: Duration,
+    options: &ConnectOptions,
+) -> Result<ServingStatus, ClientError> {
+    let endpoint = crate::secure(addr, endpoint(addr, timeout)?.timeout(timeout), options)?;
+    let channel = crate::open(addr, endpoint).await?;
     let request = HealthCheckRequest {
         service: service.to_owned(),
     };

@@ -6,8 +6,9 @@
 //! experiment scripts use the library directly.
 //!
 //! # Layout
-//! - [`connect`], [`endpoint`], [`ClientError`]: one way to reach a server, with a short connect
-//!   timeout so that a missing server fails fast instead of hanging a script.
+//! - [`connect`], [`connect_with`], [`endpoint`], [`ClientError`]: one way to reach a server, with
+//!   a short connect timeout so that a missing server fails fast instead of hanging a script, and
+//!   [`ConnectOptions`]: the bearer token and the CA certificate of a server behind TLS.
 //! - [`gaze`]: the `foveal-gaze` crate, re-exported: pure parsers and generators of
 //!   [`gaze::GazeSample`]s (CSV, EyeLink ASC, Gazepoint Open Gaze, scripted gaze), validation,
 //!   filters and fixation detection.
@@ -27,12 +28,16 @@ use std::time::Duration;
 
 use foveal_proto::pb::foveal_client::FovealClient;
 use thiserror::Error;
-use tonic::transport::{Channel, Endpoint};
+use tonic::metadata::{Ascii, MetadataValue};
+use tonic::service::Interceptor;
+use tonic::service::interceptor::InterceptedService;
+use tonic::transport::{Certificate, Channel, ClientTlsConfig, Endpoint};
 
 pub mod bridge;
 pub mod fixations;
 pub use foveal_gaze as gaze;
 pub mod health;
+pub mod load;
 pub mod pacer;
 pub mod sender;
 pub mod source;
@@ -124,6 +129,94 @@ pub fn normalise_addr(addr: &str) -> String {
     format!("{scheme}://{rest}")
 }
 
+/// How to reach a server beyond its address: the bearer token its roles need and, for a server
+/// behind TLS (`https://`), the CA certificate (PEM) that signed its certificate.
+#[derive(Clone, Default)]
+pub struct ConnectOptions {
+    /// Sent as `authorization: Bearer <token>` on every call.
+    pub token: Option<String>,
+    /// The CA certificate to trust, PEM; needed for `https://` addresses.
+    pub ca_pem: Option<Vec<u8>>,
+}
+
+// The token is a secret: never in a log line.
+impl std::fmt::Debug for ConnectOptions {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ConnectOptions")
+            .field("token", &self.token.as_ref().map(|_| "<set>"))
+            .field("ca_pem_bytes", &self.ca_pem.as_ref().map(Vec::len))
+            .finish()
+    }
+}
+
+/// Adds the bearer token (if any) to every call.
+#[derive(Debug, Clone, Default)]
+pub struct Credentials {
+    header: Option<MetadataValue<Ascii>>,
+}
+
+impl Credentials {
+    /// Credentials presenting `token`.
+    ///
+    /// # Errors
+    /// [`ClientError::InvalidOption`] for a token that cannot be a header value.
+    pub fn bearer(token: Option<&str>) -> Result<Self, ClientError> {
+        let header = token
+            .map(|t| {
+                format!("Bearer {t}")
+                    .parse::<MetadataValue<Ascii>>()
+                    .map_err(|_| ClientError::InvalidOption {
+                        name: "token",
+                        reason: "must be printable ASCII without spaces".into(),
+                    })
+            })
+            .transpose()?;
+        Ok(Self { header })
+    }
+}
+
+impl Interceptor for Credentials {
+    fn call(&mut self, mut req: tonic::Request<()>) -> Result<tonic::Request<()>, tonic::Status> {
+        if let Some(h) = &self.header {
+            req.metadata_mut().insert("authorization", h.clone());
+        }
+        Ok(req)
+    }
+}
+
+/// A connection with credentials.
+pub type Connection = InterceptedService<Channel, Credentials>;
+/// The foveal client every part of this library uses.
+pub type Client = FovealClient<Connection>;
+
+/// `endpoint` with TLS set up when `addr` is `https://`.
+///
+/// # Errors
+/// [`ClientError::InvalidOption`] for `https://` without a CA, or a CA that is not PEM.
+pub fn secure(
+    addr: &str,
+    endpoint: Endpoint,
+    options: &ConnectOptions,
+) -> Result<Endpoint, ClientError> {
+    if !normalise_addr(addr).starts_with("https://") {
+        return Ok(endpoint);
+    }
+    let Some(ca) = &options.ca_pem else {
+        return Err(ClientError::InvalidOption {
+            name: "ca",
+            reason: format!(
+                "{addr} is https: give the CA certificate that signed the server's certificate (--ca PATH or FOVEAL_CA)"
+            ),
+        });
+    };
+    endpoint
+        .tls_config(ClientTlsConfig::new().ca_certificate(Certificate::from_pem(ca)))
+        .map_err(|e| ClientError::InvalidOption {
+            name: "ca",
+            reason: format!("not a usable PEM CA certificate: {e}"),
+        })
+}
+
 /// An endpoint for `addr` (see [`normalise_addr`]) with the given connect timeout.
 ///
 /// # Errors
@@ -154,9 +247,19 @@ pub(crate) async fn open(
 ///
 /// # Errors
 /// [`ClientError::InvalidAddress`] or [`ClientError::Connect`].
-pub async fn connect(addr: &str) -> Result<FovealClient<Channel>, ClientError> {
-    let channel = open(addr, endpoint(addr, CONNECT_TIMEOUT)?).await?;
-    Ok(FovealClient::new(channel)
+pub async fn connect(addr: &str) -> Result<Client, ClientError> {
+    connect_with(addr, &ConnectOptions::default()).await
+}
+
+/// Connects like [`connect`], presenting `options`' token and trusting its CA.
+///
+/// # Errors
+/// [`ClientError::InvalidAddress`], [`ClientError::Connect`] or [`ClientError::InvalidOption`].
+pub async fn connect_with(addr: &str, options: &ConnectOptions) -> Result<Client, ClientError> {
+    let endpoint = secure(addr, endpoint(addr, CONNECT_TIMEOUT)?, options)?;
+    let credentials = Credentials::bearer(options.token.as_deref())?;
+    let channel = open(addr, endpoint).await?;
+    Ok(FovealClient::with_interceptor(channel, credentials)
         .max_decoding_message_size(MAX_MESSAGE_BYTES)
         .max_encoding_message_size(MAX_MESSAGE_BYTES))
 }

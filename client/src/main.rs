@@ -11,11 +11,13 @@ use std::time::Duration;
 
 use anyhow::{Context, Result, bail};
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use foveal_client::ConnectOptions;
 use foveal_client::bridge::{self, BridgeReport, ForwardOptions, StopReason};
 use foveal_client::gaze::ScreenPx;
 use foveal_client::gaze::opengaze;
 use foveal_client::gaze::script::{GazeScript, ScriptedGaze};
 use foveal_client::health;
+use foveal_client::load::{self, LoadOptions};
 use foveal_client::pacer::Pace;
 use foveal_client::sender::{GazeSender, Transport};
 use foveal_client::source::{self, GazepointOptions, RecordingFormat, SourceItem};
@@ -48,6 +50,9 @@ enum Command {
     /// detector; print them as CSV (`eye,start_s,end_s,x_px,y_px`, seconds from the first
     /// sample), and with --compare the agreement with a reference list as `#` lines.
     Fixations(FixationsArgs),
+    /// Load the server with gaze streams and watchers (some never reading) and measure the loop:
+    /// frame rate, step-time p99, samples sent versus accepted, server RSS over time.
+    Load(LoadArgs),
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -121,6 +126,61 @@ struct ServerArgs {
     /// Server address.
     #[arg(long, global = true, env = "FOVEAL_ADDR", default_value = foveal_client::DEFAULT_ADDR)]
     addr: String,
+    /// Bearer token for a server with roles (viewer, gaze or admin, as the command needs).
+    /// Prefer the environment variable: a flag's value is visible in the process list.
+    #[arg(long, global = true, env = "FOVEAL_TOKEN", hide_env_values = true)]
+    token: Option<String>,
+    /// CA certificate (PEM) to trust for an `https://` server.
+    #[arg(long, global = true, env = "FOVEAL_CA")]
+    ca: Option<PathBuf>,
+}
+
+impl ServerArgs {
+    fn options(&self) -> Result<ConnectOptions> {
+        let ca_pem = match &self.ca {
+            Some(path) => {
+                Some(std::fs::read(path).with_context(|| format!("read --ca {}", path.display()))?)
+            }
+            None => None,
+        };
+        Ok(ConnectOptions {
+            token: self.token.clone().filter(|t| !t.is_empty()),
+            ca_pem,
+        })
+    }
+}
+
+#[derive(Debug, Args)]
+struct LoadArgs {
+    #[command(flatten)]
+    server: ServerArgs,
+    /// Token for the gaze streams (default: --token).
+    #[arg(long, env = "FOVEAL_GAZE_TOKEN", hide_env_values = true)]
+    gaze_token: Option<String>,
+    /// Token for the watchers and status calls (default: --token).
+    #[arg(long, env = "FOVEAL_VIEWER_TOKEN", hide_env_values = true)]
+    viewer_token: Option<String>,
+    /// Gaze streams (M).
+    #[arg(long, default_value_t = 8)]
+    streams: usize,
+    /// Samples per second per gaze stream.
+    #[arg(long, default_value_t = 2000.0)]
+    rate: f64,
+    /// Watchers (K), stalled ones included.
+    #[arg(long, default_value_t = 64)]
+    watchers: usize,
+    /// Watchers that subscribe and never read a frame (S <= K).
+    #[arg(long, default_value_t = 16)]
+    stalled: usize,
+    /// Watchers ask for poses.
+    #[arg(long)]
+    poses: bool,
+    /// Seconds to run (T).
+    #[arg(long, default_value_t = 60.0)]
+    seconds: f64,
+    /// The server's process id, for its RSS (default: the process listening on the port).
+    #[arg(long)]
+    server_pid: Option<u32>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -362,6 +422,7 @@ async fn run(cli: Cli) -> Result<ExitCode> {
         Command::Watch(args) => watch(args).await,
         Command::Health(args) => health(args).await,
         Command::Fixations(args) => fixations(args),
+        Command::Load(args) => run_load(args).await,
     }
 }
 
@@ -555,7 +616,7 @@ async fn send(
     {
         bail!("--duration must be a finite number of seconds >= 0, not {d}");
     }
-    let client = foveal_client::connect(&server.addr).await?;
+    let client = foveal_client::connect_with(&server.addr, &server.options()?).await?;
     let sender = GazeSender::open(client, send.transport(), name)?;
     let options = ForwardOptions {
         pace,
@@ -570,7 +631,8 @@ async fn send(
 }
 
 async fn watch(args: WatchArgs) -> Result<ExitCode> {
-    let mut client = foveal_client::connect(&args.server.addr).await?;
+    let mut client =
+        foveal_client::connect_with(&args.server.addr, &args.server.options()?).await?;
     let options = WatchOptions {
         every_k: args.every,
         poses: args.poses,
@@ -622,7 +684,8 @@ async fn watch(args: WatchArgs) -> Result<ExitCode> {
 
 async fn health(args: HealthArgs) -> Result<ExitCode> {
     let timeout = Duration::from_millis(args.timeout_ms);
-    match health::check(&args.server.addr, &args.service, timeout).await {
+    let options = args.server.options()?;
+    match health::check_with(&args.server.addr, &args.service, timeout, &options).await {
         Ok(status) => {
             println!("{}", status.as_str_name());
             Ok(if status == health::ServingStatus::Serving {
@@ -637,4 +700,39 @@ async fn health(args: HealthArgs) -> Result<ExitCode> {
             Ok(ExitCode::FAILURE)
         }
     }
+}
+
+async fn run_load(args: LoadArgs) -> Result<ExitCode> {
+    if !(args.seconds.is_finite() && args.seconds > 0.0) {
+        bail!("--seconds must be a positive number, not {}", args.seconds);
+    }
+    let base = args.server.options()?;
+    let with = |token: &Option<String>| ConnectOptions {
+        token: token.clone().or_else(|| base.token.clone()),
+        ..base.clone()
+    };
+    let options = LoadOptions {
+        addr: args.server.addr.clone(),
+        gaze: with(&args.gaze_token),
+        viewer: with(&args.viewer_token),
+        streams: args.streams,
+        rate_hz: args.rate,
+        watchers: args.watchers,
+        stalled: args.stalled,
+        poses: args.poses,
+        duration: Duration::from_secs_f64(args.seconds),
+        server_pid: args.server_pid,
+        ..LoadOptions::default()
+    };
+    info!(
+        streams = options.streams,
+        rate_hz = options.rate_hz,
+        watchers = options.watchers,
+        stalled = options.stalled,
+        seconds = args.seconds,
+        "loading"
+    );
+    let report = load::run(&options).await?;
+    println!("{report}");
+    Ok(ExitCode::SUCCESS)
 }

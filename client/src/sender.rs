@@ -14,12 +14,10 @@ use std::fmt;
 use std::time::Duration;
 
 use foveal_proto::pb;
-use foveal_proto::pb::foveal_client::FovealClient;
 use tokio::sync::mpsc;
 use tokio::task::JoinHandle;
 use tokio::time::Instant;
 use tokio_stream::wrappers::ReceiverStream;
-use tonic::transport::Channel;
 
 use crate::ClientError;
 use crate::gaze::{Eye, GazeSample};
@@ -56,6 +54,8 @@ pub struct SendSummary {
     pub accepted: u64,
     /// Samples the server rejected (count).
     pub rejected: u64,
+    /// Samples the server dropped unread by its gaze rate limit (count).
+    pub rate_limited: u64,
     /// The first rejections, in order (capped; `rejected` is exact).
     pub rejections: Vec<Rejection>,
     /// Tracker time of the last accepted sample, seconds; `None` if none was accepted.
@@ -97,6 +97,13 @@ impl fmt::Display for SendSummary {
             "sent {}, accepted {}, rejected {}",
             self.sent, self.accepted, self.rejected
         )?;
+        if self.rate_limited > 0 {
+            write!(
+                f,
+                ", rate-limited {} (over the server's gaze rate limit)",
+                self.rate_limited
+            )?;
+        }
         if let Some(t) = self.last_accepted_time_s {
             write!(f, ", last accepted t={t:.3} s")?;
         }
@@ -122,7 +129,7 @@ enum Inner {
     },
     Push {
         /// Boxed: a client is large next to the stream's two handles.
-        client: Box<FovealClient<Channel>>,
+        client: Box<crate::Client>,
         source: String,
         batch: usize,
         buf: Vec<pb::GazeSample>,
@@ -161,7 +168,7 @@ impl GazeSender {
     /// # Panics
     /// Under [`Transport::Stream`], when called outside a tokio runtime.
     pub fn open(
-        client: FovealClient<Channel>,
+        client: crate::Client,
         transport: Transport,
         source: &str,
     ) -> Result<Self, ClientError> {
@@ -266,6 +273,7 @@ impl GazeSender {
                 status,
             })?
             .into_inner();
+        self.summary.rate_limited += response.rate_limited;
         self.summary.absorb(
             self.answered,
             response.accepted,
@@ -287,6 +295,7 @@ impl GazeSender {
             tx.take();
             let response = await_call(call).await?;
             let sent = self.summary.sent;
+            self.summary.rate_limited += response.rate_limited;
             self.summary.absorb(
                 0,
                 response.accepted,

@@ -16,9 +16,7 @@ use std::io::Write;
 use std::time::Duration;
 
 use foveal_proto::pb;
-use foveal_proto::pb::foveal_client::FovealClient;
 use tokio::time::Instant;
-use tonic::transport::Channel;
 
 use crate::ClientError;
 
@@ -288,7 +286,7 @@ impl Window {
 /// # Errors
 /// [`ClientError::Rpc`] when the subscription fails, [`ClientError::Io`] when a writer fails.
 pub async fn watch<C: Write, S: Write>(
-    client: &mut FovealClient<Channel>,
+    client: &mut crate::Client,
     options: WatchOptions,
     mut csv: Option<C>,
     mut summary: Option<S>,

@@ -16,15 +16,12 @@
 //! `FOVEAL_BENCH_SECONDS` (fan-out duration, default 10), `FOVEAL_LOG` (server log filter,
 //! default `warn`; `info` shows the server's per-second summary lines).
 
-use std::net::SocketAddr;
 use std::time::{Duration, Instant};
 
 use foveal_engine::BudgetSpec;
 use foveal_proto::pb;
-use foveal_proto::pb::foveal_client::FovealClient;
 use foveal_server::ServerConfig;
-use tokio::sync::oneshot;
-use tonic::transport::Channel;
+use foveal_tests::TestServer as Server;
 
 type BoxError = Box<dyn std::error::Error + Send + Sync>;
 
@@ -33,38 +30,6 @@ fn env_or<T: std::str::FromStr>(name: &str, default: T) -> T {
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(default)
-}
-
-struct Server {
-    addr: SocketAddr,
-    stop: oneshot::Sender<()>,
-    task: tokio::task::JoinHandle<Result<(), foveal_server::ServerError>>,
-}
-
-async fn start(config: ServerConfig) -> Result<Server, BoxError> {
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await?;
-    let addr = listener.local_addr()?;
-    let (stop, stopped) = oneshot::channel::<()>();
-    let task = tokio::spawn(foveal_server::run(listener, config, async move {
-        let _ = stopped.await;
-    }));
-    Ok(Server { addr, stop, task })
-}
-
-impl Server {
-    async fn client(&self) -> Result<FovealClient<Channel>, BoxError> {
-        let channel = Channel::from_shared(format!("http://{}", self.addr))?
-            .tcp_nodelay(true)
-            .connect()
-            .await?;
-        Ok(FovealClient::new(channel).max_decoding_message_size(256 << 20))
-    }
-
-    async fn stop(self) -> Result<(), BoxError> {
-        let _ = self.stop.send(());
-        self.task.await??;
-        Ok(())
-    }
 }
 
 fn quantile_ms(sorted: &[Duration], q: f64) -> f64 {
@@ -82,7 +47,7 @@ async fn latency(
     period: Duration,
     budget_ms: f64,
 ) -> Result<(), BoxError> {
-    let mut client = server.client().await?;
+    let mut client = server.client().await;
     let mut frames = client
         .watch_frames(pb::WatchFramesRequest {
             every_k: 1,
@@ -92,7 +57,7 @@ async fn latency(
         .await?
         .into_inner();
     let (tx, rx) = tokio::sync::mpsc::channel(64);
-    let mut gaze_client = server.client().await?;
+    let mut gaze_client = server.client().await;
     let gaze = tokio::spawn(async move {
         gaze_client
             .stream_gaze(tokio_stream::wrappers::ReceiverStream::new(rx))
@@ -198,12 +163,12 @@ async fn fanout(
     seconds: f64,
     rate: f64,
 ) -> Result<(), BoxError> {
-    let mut status_client = server.client().await?;
+    let mut status_client = server.client().await;
     let deadline = Instant::now() + Duration::from_secs_f64(seconds);
     let mut tasks = Vec::new();
     for _ in 0..subscribers {
         // One connection per subscriber, as separate viewers would have.
-        let mut client = server.client().await?;
+        let mut client = server.client().await;
         let mut frames = client
             .watch_frames(pb::WatchFramesRequest {
                 every_k: 1,
@@ -281,12 +246,12 @@ fn main() -> Result<(), BoxError> {
         .enable_all()
         .build()?;
     rt.block_on(async {
-        let server = start(config).await?;
+        let server = Server::start(config).await;
         // Let the loop settle (first frames warm caches and the broad phase).
         tokio::time::sleep(Duration::from_secs(1)).await;
         latency(&server, samples, false, period, budget_ms).await?;
         latency(&server, samples / 3, true, period, budget_ms).await?;
         fanout(&server, 32, seconds, rate).await?;
-        server.stop().await
+        Ok::<(), BoxError>(server.stop().await?)
     })
 }

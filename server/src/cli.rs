@@ -5,6 +5,7 @@
 //! rules and messages as Configure.
 
 use std::net::SocketAddr;
+use std::path::PathBuf;
 use std::str::FromStr;
 use std::time::Duration;
 
@@ -15,7 +16,10 @@ use foveal_engine::{
     SimConfig,
 };
 
-use crate::config::ServerConfig;
+use crate::auth::{Role, Tokens};
+use crate::config::{Security, ServerConfig, TlsIdentity};
+use crate::error::ServerError;
+use crate::limits::{self, Limits};
 
 /// Bodies of the scene the server starts with. With [`DEFAULT_BUDGET`] the point of foveal shows at
 /// once: about a third of the candidate pairs are deemed each frame, so P is visible and moves with
@@ -114,6 +118,41 @@ pub struct Cli {
     /// Eyes of a binocular tracker: the mean of the valid eyes, or one eye.
     #[arg(long, env = "FOVEAL_GAZE_EYES", value_enum, default_value = "mean")]
     pub gaze_eyes: GazeEyesArg,
+    /// Token of the `viewer` role (WatchFrames, GetScene, GetStatus). Prefer the environment
+    /// variable: a flag's value is visible to other users in the process list.
+    #[arg(long, env = "FOVEAL_VIEWER_TOKEN", hide_env_values = true)]
+    pub viewer_token: Option<String>,
+    /// Token of the `gaze` role (StreamGaze, PushGaze).
+    #[arg(long, env = "FOVEAL_GAZE_TOKEN", hide_env_values = true)]
+    pub gaze_token: Option<String>,
+    /// Token of the `admin` role (Configure, and everything else).
+    #[arg(long, env = "FOVEAL_ADMIN_TOKEN", hide_env_values = true)]
+    pub admin_token: Option<String>,
+    /// Tokens file: one `role token` (or `role=token`) per line, roles viewer, gaze, admin; `#`
+    /// starts a comment. Adds to the tokens from the environment.
+    #[arg(long, env = "FOVEAL_TOKENS")]
+    pub tokens: Option<PathBuf>,
+    /// Serve without tokens on an address other than loopback (anyone who can reach it may
+    /// reconfigure the scene). Without tokens the server otherwise refuses to start there.
+    #[arg(long, env = "FOVEAL_INSECURE")]
+    pub insecure: bool,
+    /// TLS certificate chain (PEM); with --tls-key the server speaks TLS only.
+    #[arg(long, env = "FOVEAL_TLS_CERT", requires = "tls_key")]
+    pub tls_cert: Option<PathBuf>,
+    /// TLS private key (PEM).
+    #[arg(long, env = "FOVEAL_TLS_KEY", requires = "tls_cert")]
+    pub tls_key: Option<PathBuf>,
+    /// Refuse scenes (at start-up and in Configure) whose expected broad-phase candidate pairs
+    /// per frame exceed this.
+    #[arg(long, env = "FOVEAL_MAX_CANDIDATE_PAIRS", default_value_t = limits::DEFAULT_MAX_CANDIDATE_PAIRS)]
+    pub max_candidate_pairs: u64,
+    /// Refuse scenes whose estimated memory exceeds this many MiB.
+    #[arg(long, env = "FOVEAL_MAX_MEMORY_MIB", default_value_t = limits::DEFAULT_MAX_MEMORY_MIB)]
+    pub max_memory_mib: u64,
+    /// Gaze samples per second one stream (or one connection's PushGaze calls) may deliver;
+    /// samples above it are dropped and counted (`rate_limited`).
+    #[arg(long, env = "FOVEAL_MAX_GAZE_RATE", default_value_t = limits::DEFAULT_MAX_GAZE_RATE_HZ)]
+    pub max_gaze_rate: f64,
     /// Log filter (`info`, `debug`, `foveal_server=debug,info`, ...).
     #[arg(long, env = "FOVEAL_LOG", default_value = "info")]
     pub log_level: String,
@@ -260,10 +299,51 @@ impl Cli {
             frame_rate_hz: self.frame_rate,
             gaze_max_age: Duration::from_secs_f64(max_age.min(1e6)),
             gaze_processing,
+            limits: Limits {
+                max_candidate_pairs: self.max_candidate_pairs,
+                max_memory_mib: self.max_memory_mib,
+                max_gaze_rate_hz: self.max_gaze_rate,
+            },
             ..ServerConfig::default()
         };
         config.validate()?;
         Ok(config)
+    }
+
+    /// Tokens (environment and file) and TLS files, read and checked.
+    pub fn security(&self) -> Result<Security, ServerError> {
+        let mut tokens = match &self.tokens {
+            Some(path) => Tokens::from_file(path)?,
+            None => Tokens::none(),
+        };
+        for (role, token) in [
+            (Role::Viewer, &self.viewer_token),
+            (Role::Gaze, &self.gaze_token),
+            (Role::Admin, &self.admin_token),
+        ] {
+            if let Some(t) = token.as_deref().filter(|t| !t.is_empty()) {
+                tokens.add(role, t, role.env_var())?;
+            }
+        }
+        let read = |what: &'static str, path: &PathBuf| {
+            std::fs::read(path).map_err(|source| ServerError::TlsFile {
+                what,
+                path: path.display().to_string(),
+                source,
+            })
+        };
+        let tls = match (&self.tls_cert, &self.tls_key) {
+            (Some(cert), Some(key)) => Some(TlsIdentity {
+                cert_pem: read("--tls-cert", cert)?,
+                key_pem: read("--tls-key", key)?,
+            }),
+            _ => None,
+        };
+        Ok(Security {
+            tokens,
+            tls,
+            insecure: self.insecure,
+        })
     }
 }
 
@@ -339,6 +419,31 @@ mod tests {
         expected.budget = BudgetSpec::SphereTests(8000);
         assert_eq!(c.sim, expected);
         assert_eq!(c.gaze_max_age, Duration::from_millis(500));
+        let sec = cli.security().expect("no tokens, no TLS");
+        assert!(sec.tokens.is_empty() && sec.tls.is_none() && !sec.insecure);
+    }
+
+    #[test]
+    fn tokens_and_limits_come_from_flags() {
+        let cli = Cli::try_parse_from([
+            "foveal-server",
+            "--admin-token=admin-0123456789abcdef",
+            "--max-candidate-pairs=10",
+        ])
+        .expect("parse");
+        let sec = cli.security().expect("valid token");
+        assert_eq!(
+            sec.tokens.role_of("admin-0123456789abcdef"),
+            Some(Role::Admin)
+        );
+        let e = cli.server_config().expect_err("500 bodies exceed 10 pairs");
+        assert_eq!(e.field, "scene.bodies");
+        let weak = Cli::try_parse_from(["foveal-server", "--gaze-token=abc"]).expect("parse");
+        assert!(weak.security().is_err());
+        assert!(
+            Cli::try_parse_from(["foveal-server", "--tls-cert=c.pem"]).is_err(),
+            "a certificate needs its key"
+        );
     }
 
     #[test]

@@ -8,6 +8,9 @@ use std::time::Duration;
 
 use foveal_engine::{ConfigError, SimConfig};
 
+use crate::auth::Tokens;
+use crate::limits::Limits;
+
 /// Slowest frame rate accepted (frames per second): below this a "frame loop" is a batch job.
 pub const MIN_FRAME_RATE_HZ: f64 = 1.0;
 /// Fastest frame rate accepted (frames per second): beyond this the OS sleep granularity, not the
@@ -36,6 +39,45 @@ pub struct ServerConfig {
     /// Online gaze processing (eyes, filter, fixation detector, track loss); by default raw
     /// samples steer, the lowest latency from gaze to schedule.
     pub gaze_processing: foveal_gaze::online::ProcessorConfig,
+    /// Who may call what, and whether the transport is encrypted.
+    pub security: Security,
+    /// Limits protecting the loop (scene cost, gaze rate).
+    pub limits: Limits,
+    /// Health turns NOT_SERVING when no frame has completed for this many frame periods, and back
+    /// to SERVING when frames flow again.
+    pub stall_periods: u32,
+}
+
+/// Health's default stall threshold in frame periods (half a second at 60 Hz).
+pub const DEFAULT_STALL_PERIODS: u32 = 30;
+
+/// A certificate chain and its private key (PEM), for TLS.
+#[derive(Clone, PartialEq, Eq)]
+pub struct TlsIdentity {
+    /// The certificate chain, PEM.
+    pub cert_pem: Vec<u8>,
+    /// The private key, PEM.
+    pub key_pem: Vec<u8>,
+}
+
+// The key is a secret: never in a log line.
+impl std::fmt::Debug for TlsIdentity {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("TlsIdentity")
+            .field("cert_pem_bytes", &self.cert_pem.len())
+            .finish_non_exhaustive()
+    }
+}
+
+/// Authentication and encryption.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Security {
+    /// Bearer tokens by role; empty means open (allowed on loopback only, or with `insecure`).
+    pub tokens: Tokens,
+    /// TLS certificate and key; `None` serves plaintext HTTP/2.
+    pub tls: Option<TlsIdentity>,
+    /// Serve without tokens on a non-loopback address (`--insecure`).
+    pub insecure: bool,
 }
 
 impl Default for ServerConfig {
@@ -48,6 +90,9 @@ impl Default for ServerConfig {
             summary_interval: Duration::from_secs(1),
             shutdown_grace: Duration::from_secs(5),
             gaze_processing: foveal_gaze::online::ProcessorConfig::default(),
+            security: Security::default(),
+            limits: Limits::default(),
+            stall_periods: DEFAULT_STALL_PERIODS,
         }
     }
 }
@@ -86,7 +131,16 @@ impl ServerConfig {
                 expected: "must be > 0".into(),
             });
         }
-        self.sim.validate()
+        if self.stall_periods == 0 {
+            return Err(ConfigError {
+                field: "stall_periods",
+                value: "0".into(),
+                expected: "must be >= 1 (frame periods)".into(),
+            });
+        }
+        self.limits.validate()?;
+        self.sim.validate()?;
+        self.limits.check(&self.sim).map(|_| ())
     }
 
     /// One frame period at the configured rate.

@@ -245,6 +245,123 @@ pub fn merge_scene_config(
     Ok((c, rate))
 }
 
+/// Apply a Configure request with an update mask: exactly the listed fields are taken from `req`,
+/// zero and false included; the rest keep their current value. The error names the first
+/// offending field (or the unknown path).
+pub fn merge_masked(
+    current: &SimConfig,
+    current_rate_hz: f64,
+    req: &pb::SceneConfig,
+    paths: &[String],
+) -> Result<(SimConfig, f64), ConfigError> {
+    let mut c = current.clone();
+    let mut rate = current_rate_hz;
+    let display = req.display.unwrap_or_default();
+    for path in paths {
+        let s = &mut c.scene;
+        match path.as_str() {
+            "bodies" => s.bodies = req.bodies,
+            "seed" => s.seed = req.seed,
+            "density" => s.density = req.density,
+            "shape_radius" => s.shape_radius = req.shape_radius,
+            "depth" => s.depth = req.depth,
+            "dt_s" => s.dt = req.dt_s,
+            "min_speed" => s.min_speed = req.min_speed,
+            "max_speed" => s.max_speed = req.max_speed,
+            "max_spin" => s.max_spin = req.max_spin,
+            "scheduler" => {
+                c.scheduler = scheduler_from_pb(req.scheduler)?.ok_or_else(|| {
+                    invalid(
+                        "scheduler",
+                        "SCHEDULER_UNSPECIFIED",
+                        "must name a scheduler when listed in update_mask",
+                    )
+                })?;
+            }
+            "eccentricity_threshold_deg" => {
+                c.eccentricity_threshold_deg = req.eccentricity_threshold_deg;
+            }
+            "budget" => {
+                c.budget = req
+                    .budget
+                    .as_ref()
+                    .map(budget_from_pb)
+                    .transpose()?
+                    .flatten()
+                    .ok_or_else(|| {
+                        invalid(
+                            "budget",
+                            "unset",
+                            "must set one budget kind when listed in update_mask",
+                        )
+                    })?;
+            }
+            "schedule_model" => {
+                let m = req.schedule_model.unwrap_or_default();
+                c.schedule_model = merge_model("schedule_model", c.schedule_model, &m)?;
+            }
+            "measure_model" => {
+                let m = req.measure_model.unwrap_or_default();
+                c.measure_model = merge_model("measure_model", c.measure_model, &m)?;
+            }
+            "audit" => c.audit = req.audit,
+            "frame_rate_hz" => rate = req.frame_rate_hz,
+            "display" => {
+                c.display.width_px = display.width_px;
+                c.display.height_px = display.height_px;
+                c.display.diagonal_in = display.diagonal_in;
+                c.display.viewing_distance_cm = display.viewing_distance_cm;
+            }
+            "display.width_px" => c.display.width_px = display.width_px,
+            "display.height_px" => c.display.height_px = display.height_px,
+            "display.diagonal_in" => c.display.diagonal_in = display.diagonal_in,
+            "display.viewing_distance_cm" => {
+                c.display.viewing_distance_cm = display.viewing_distance_cm;
+            }
+            other => {
+                return Err(invalid(
+                    "update_mask",
+                    other,
+                    "must list SceneConfig field names (e.g. `bodies`, `audit`, `display.width_px`)",
+                ));
+            }
+        }
+    }
+    crate::config::validate_frame_rate(rate)?;
+    c.validate()?;
+    Ok((c, rate))
+}
+
+/// The SceneConfig fields that differ between two full configurations (for the Configure log).
+pub fn changed_fields(before: &pb::SceneConfig, after: &pb::SceneConfig) -> Vec<&'static str> {
+    let mut changed = Vec::new();
+    macro_rules! cmp {
+        ($($f:ident),*) => {
+            $(if before.$f != after.$f { changed.push(stringify!($f)); })*
+        };
+    }
+    cmp!(
+        bodies,
+        seed,
+        density,
+        shape_radius,
+        depth,
+        dt_s,
+        min_speed,
+        max_speed,
+        max_spin,
+        scheduler,
+        eccentricity_threshold_deg,
+        budget,
+        schedule_model,
+        measure_model,
+        audit,
+        frame_rate_hz,
+        display
+    );
+    changed
+}
+
 fn vec3(v: Vec3) -> pb::Vec3 {
     pb::Vec3 {
         x: v.x,
@@ -361,17 +478,40 @@ pub fn gaze_track_to_pb(track: foveal_gaze::online::Track) -> pb::GazeTrack {
     }
 }
 
+/// The fixation a step used, from the engine's record of it, with the source the server resolved
+/// and what the gaze processing saw. The engine ignores an unusable fixation; the frame then says
+/// the centre was used for want of gaze rather than repeating what was handed in.
+pub fn fixation_used(r: &FrameReport, resolved: &ResolvedFixation) -> pb::Fixation {
+    let base = fixation_to_pb(resolved);
+    match r.fixation {
+        Some(f) => pb::Fixation {
+            x: f.x,
+            y: f.y,
+            age_s: f.age_s,
+            ..base
+        },
+        None => pb::Fixation {
+            x: crate::fixation_cell::FALLBACK.0,
+            y: crate::fixation_cell::FALLBACK.1,
+            age_s: 0.0,
+            source: pb::FixationSource::FallbackNoGaze as i32,
+            widen_deg: 0.0,
+            ..base
+        },
+    }
+}
+
 fn ns_to_s(ns: u64) -> f64 {
     ns as f64 * 1e-9
 }
 
 /// A frame without poses or collisions and with `dropped_before` 0 (all are per subscriber).
-pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &ResolvedFixation) -> pb::Frame {
+pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &pb::Fixation) -> pb::Frame {
     let p = &r.profile;
     pb::Frame {
         index,
         sim_time_s: r.sim_time,
-        fixation: Some(fixation_to_pb(fixation)),
+        fixation: Some(*fixation),
         metrics: Some(pb::FrameMetrics {
             collision_time_s: r.collision_time_s(),
             geometric_inaccuracy: r.geometric_inaccuracy,
@@ -423,6 +563,32 @@ mod tests {
             merge_scene_config(&c, 90.0, &pb::SceneConfig::default()).expect("valid");
         assert_eq!(same, c);
         assert_eq!(rate, 90.0);
+    }
+
+    #[test]
+    fn a_mask_applies_exactly_its_fields_and_the_log_names_them() {
+        let c = SimConfig::default();
+        let paths = |p: &[&str]| p.iter().map(|&s| s.to_owned()).collect::<Vec<_>>();
+        let req = pb::SceneConfig {
+            seed: 0,
+            min_speed: 0.0,
+            bodies: 7,
+            ..Default::default()
+        };
+        let (m, rate) =
+            merge_masked(&c, 60.0, &req, &paths(&["seed", "min_speed"])).expect("valid");
+        assert_eq!((m.scene.seed, m.scene.min_speed), (0, 0.0));
+        assert_eq!(
+            m.scene.bodies, c.scene.bodies,
+            "unlisted fields keep their value"
+        );
+        assert_eq!(rate, 60.0);
+        let changed = changed_fields(&scene_config_to_pb(&c, 60.0), &scene_config_to_pb(&m, rate));
+        assert_eq!(changed, ["seed", "min_speed"]);
+        let e = merge_masked(&c, 60.0, &req, &paths(&["budget"])).expect_err("no budget set");
+        assert_eq!(e.field, "budget");
+        let e = merge_masked(&c, 60.0, &req, &paths(&["colour"])).expect_err("unknown path");
+        assert_eq!(e.field, "update_mask");
     }
 
     #[test]

@@ -20,6 +20,28 @@ pub enum ServerError {
     /// The frame loop thread panicked (the engine hit a bug).
     #[error("the frame loop thread panicked: {0}")]
     LoopPanicked(String),
+    /// No tokens on an address other than loopback, without `--insecure`.
+    #[error(
+        "refusing to serve {addr} without tokens: anyone who can reach it could reconfigure the scene. Set FOVEAL_VIEWER_TOKEN, FOVEAL_GAZE_TOKEN and FOVEAL_ADMIN_TOKEN (or --tokens PATH), bind 127.0.0.1, or pass --insecure"
+    )]
+    Insecure {
+        /// The address.
+        addr: String,
+    },
+    /// The tokens could not be loaded.
+    #[error(transparent)]
+    Tokens(#[from] crate::auth::TokenError),
+    /// A TLS file could not be read.
+    #[error("reading {what} {path}: {source}")]
+    TlsFile {
+        /// `--tls-cert` or `--tls-key`.
+        what: &'static str,
+        /// The path.
+        path: String,
+        /// The I/O error.
+        #[source]
+        source: std::io::Error,
+    },
     /// Building the initial simulation was cancelled or panicked.
     #[error("building the initial simulation: {0}")]
     Build(#[from] tokio::task::JoinError),

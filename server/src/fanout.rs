@@ -99,6 +99,7 @@ impl Fanout {
         self.collision_subscribers.load(Ordering::Relaxed) > 0
     }
 
+    #[cfg(test)]
     /// A new subscription receiving frames published from now on.
     pub fn subscribe(self: &Arc<Self>, every_k: u32, include_poses: bool) -> Subscription {
         self.subscribe_to(

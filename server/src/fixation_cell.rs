@@ -98,6 +98,7 @@ impl FixationCell {
         }
     }
 
+    #[cfg(test)]
     /// Makes (x, y), received at `received`, the latest gaze: a valid sample of unknown eye,
     /// stamped with its receipt time (so it has no excess transit).
     pub fn store(&self, x: f64, y: f64, received: Instant) {

@@ -167,10 +167,12 @@ fn run(
         }
 
         let start = Instant::now();
-        let fixation = shared.fixation.resolve(start, shared.gaze_max_age);
-        let report = sim.step(Some(fixation.fixation), &clock);
+        let resolved = shared.fixation.resolve(start, shared.gaze_max_age);
+        let report = sim.step(Some(resolved.fixation), &clock);
         let step = start.elapsed();
-        let frame = convert::frame_to_pb(report, offset + report.index, &fixation);
+        // The frame reports what the step used (the engine's record), not what was handed in.
+        let used = convert::fixation_used(report, &resolved);
+        let frame = convert::frame_to_pb(report, offset + report.index, &used);
         summary.record(report, step);
         let poses = shared
             .fanout
@@ -184,9 +186,8 @@ fn run(
             .fanout
             .wants_collisions()
             .then(|| Arc::new(convert::collisions(&sim)));
-        shared
-            .metrics
-            .frame_done(convert::fixation_to_pb(&fixation));
+        let end = Instant::now();
+        shared.metrics.frame_done(used, end);
         shared.fanout.publish(FrameMsg {
             frame,
             poses,
@@ -194,7 +195,6 @@ fn run(
             collisions,
         });
 
-        let end = Instant::now();
         deadline += period;
         if end > deadline {
             shared.metrics.overrun();

@@ -6,11 +6,11 @@
 //! sample is rejected on its own with a reason naming the field, counted, and the samples around
 //! it are kept. Only samples that pass every check can become the fixation.
 
-use foveal_gaze::validate::{RejectKind, Validator};
+#[cfg(test)]
+use foveal_gaze::validate::RejectKind;
+use foveal_gaze::validate::Validator;
 use foveal_gaze::{Eye, GazeSample};
 use foveal_proto::pb;
-
-pub use foveal_gaze::validate::{MAX_COORD, MAX_TIME_JUMP_S, MIN_COORD, RESYNC_SAMPLES};
 
 /// Largest PushGaze batch (samples). A 1 kHz tracker produces this in 10 s; anything larger is a
 /// client that should be streaming, and it keeps one call's decoding and locking bounded.
@@ -94,9 +94,16 @@ impl GazeValidator {
         }
     }
 
+    #[cfg(test)]
     /// Samples rejected so far for one rule.
     pub fn rejected_for(&self, kind: RejectKind) -> u64 {
         self.rules.rejected_for(kind)
+    }
+
+    /// Pass over the next sample without looking at it (dropped by the rate limit), so that later
+    /// rejections keep their index in the stream.
+    pub fn skip(&mut self) {
+        self.next_index += 1;
     }
 
     /// Samples accepted so far.
@@ -116,6 +123,7 @@ impl GazeValidator {
             rejected: self.rules.rejected(),
             rejections: self.rejections,
             last_accepted_time_s: self.last_accepted_time_s,
+            rate_limited: 0,
         }
     }
 
@@ -126,6 +134,7 @@ impl GazeValidator {
             rejected: self.rules.rejected(),
             rejections: self.rejections,
             last_accepted_time_s: self.last_accepted_time_s,
+            rate_limited: 0,
         }
     }
 }

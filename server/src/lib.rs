@@ -8,6 +8,9 @@
 //!   future resolves, then end open streams, stop and join the frame loop.
 //! - [`config`]: [`ServerConfig`], the engine config plus frame rate, gaze max age, buffers.
 //! - [`cli`]: the `foveal-server` flags and `FOVEAL_*` environment variables; [`telemetry`]: logs.
+//! - `auth`: roles by bearer token; `gate`: the layer every request passes (shutdown, roles,
+//!   calls in progress, oversize codes); `limits`: scene-cost limits, gaze rate limits, stream
+//!   and connection limits; `watchdog`: health follows whether frames complete.
 //! - [`frame_loop`]: the frame loop's OS thread: fixed-rate pacing, overrun counting, scene swaps
 //!   at frame boundaries; [`clock`]: the monotonic clock the engine's wall-clock budget runs on.
 //! - [`fixation_cell`]: the latest-gaze cell the loop reads once per frame, with the fallback rule.
@@ -23,48 +26,84 @@
 //! subscribers. Protocol semantics are documented in `docs/PROTOCOL.md`.
 
 use std::future::Future;
+use std::net::SocketAddr;
 use std::sync::Arc;
+use std::time::Duration;
 
 use foveal_engine::Simulation;
 use foveal_proto::pb::foveal_server::FovealServer;
 use tokio::net::TcpListener;
 use tokio_stream::StreamExt;
 use tokio_stream::wrappers::TcpListenerStream;
+use tonic::transport::{Identity, ServerTlsConfig};
 
+mod auth;
 pub mod cli;
-pub mod clock;
+mod clock;
 pub mod config;
-pub mod convert;
+mod convert;
 pub mod error;
-pub mod fanout;
-pub mod fixation_cell;
-pub mod frame_loop;
-pub mod gaze;
-pub mod metrics;
-pub mod service;
-pub mod shutdown;
-pub mod state;
-pub mod summary;
+mod fanout;
+mod fixation_cell;
+mod frame_loop;
+mod gate;
+mod gaze;
+mod limits;
+mod metrics;
+mod service;
+mod shutdown;
+mod state;
+mod summary;
 pub mod telemetry;
-pub mod web;
+mod watchdog;
+mod web;
 
-pub use config::ServerConfig;
+pub use auth::{MIN_TOKEN_LEN, Role, TokenError, Tokens};
+pub use config::{Security, ServerConfig, TlsIdentity};
 pub use error::ServerError;
-pub use service::FovealService;
+pub use gaze::MAX_BATCH_SAMPLES;
+pub use limits::{
+    Limits, MAX_DENSITY, MAX_GAZE_STREAMS, MAX_REQUEST_BYTES, MAX_SUBSCRIBERS, MIN_DENSITY,
+};
 
 use frame_loop::FrameLoop;
+use gate::{GateLayer, GateState};
+use service::FovealService;
 use state::{Scene, Shared};
 
+/// The foveal service's name in the health registry.
+const FOVEAL_SERVICE_NAME: &str = "foveal.v1.Foveal";
+
+/// After open calls have finished at shutdown, how long responses already written get to leave
+/// before the connections still open (a subscriber that stopped reading) are abandoned.
+const SHUTDOWN_LINGER: Duration = Duration::from_millis(250);
+
+/// Refuse to serve an address other than loopback without tokens, unless told to.
+fn check_exposure(addr: Option<SocketAddr>, security: &Security) -> Result<(), ServerError> {
+    match addr {
+        Some(a) if !a.ip().is_loopback() && security.tokens.is_empty() && !security.insecure => {
+            Err(ServerError::Insecure {
+                addr: a.to_string(),
+            })
+        }
+        _ => Ok(()),
+    }
+}
+
 /// Serve the foveal service (plus health and reflection v1/v1alpha) on `listener` until `shutdown`
-/// resolves. Then: health turns NOT_SERVING, open WatchFrames and StreamGaze calls end, calls
-/// still open after [`ServerConfig::shutdown_grace`] are abandoned, and the frame loop thread is
-/// stopped and joined.
+/// resolves. Then: health turns NOT_SERVING, every new call answers UNAVAILABLE at once, open
+/// StreamGaze calls end with their summary and WatchFrames streams end; once no call is in
+/// progress (or after [`ServerConfig::shutdown_grace`]), connections still open, such as a
+/// subscriber that stopped reading, are abandoned, and the frame loop thread is stopped and
+/// joined.
 pub async fn run(
     listener: TcpListener,
     config: ServerConfig,
     shutdown: impl Future<Output = ()>,
 ) -> Result<(), ServerError> {
     config.validate()?;
+    let local = listener.local_addr().ok();
+    check_exposure(local, &config.security)?;
     let rate = config.frame_rate_hz;
     let sim_config = config.sim.clone();
     // Scene generation and budget calibration can take seconds at large N: not on a worker.
@@ -81,10 +120,22 @@ pub async fn run(
     );
     let frame_loop = FrameLoop::spawn(sim, Arc::clone(&shared), config.summary_interval)?;
     let (trigger, stop) = shutdown::channel();
-    let service = FovealService::new(Arc::clone(&shared), frame_loop.commands(), stop.clone());
+    let service = FovealService::new(
+        Arc::clone(&shared),
+        frame_loop.commands(),
+        stop.clone(),
+        config.limits,
+    );
+    let gate = GateState::new(config.security.tokens.clone(), stop.clone());
 
     let (health, health_service) = tonic_health::server::health_reporter();
-    health.set_serving::<FovealServer<FovealService>>().await;
+    watchdog::set(&health, tonic_health::ServingStatus::Serving).await;
+    let watchdog = tokio::spawn(watchdog::run(
+        Arc::clone(&shared),
+        health.clone(),
+        config.stall_periods,
+        stop.clone(),
+    ));
     let reflection = || {
         tonic_reflection::server::Builder::configure()
             .register_encoded_file_descriptor_set(foveal_proto::FILE_DESCRIPTOR_SET)
@@ -93,17 +144,20 @@ pub async fn run(
     let reflection_v1 = reflection().build_v1()?;
     let reflection_v1alpha = reflection().build_v1alpha()?;
 
-    let addr = listener
-        .local_addr()
-        .map_or_else(|e| format!("unknown ({e})"), |a| a.to_string());
+    let addr = local.map_or_else(|| "unknown".to_owned(), |a| a.to_string());
     tracing::info!(
         %addr,
         bodies = config.sim.scene.bodies,
         scheduler = config.sim.scheduler.name(),
         budget = ?config.sim.budget,
         frame_rate_hz = rate,
+        tls = config.security.tls.is_some(),
+        auth = if config.security.tokens.is_empty() { "open" } else { "tokens" },
         "serving"
     );
+    if config.security.tokens.is_empty() && config.security.insecure {
+        tracing::warn!(%addr, "serving without tokens on a non-loopback address (--insecure)");
+    }
     // Frames are small writes that must leave at once: no Nagle delay on accepted connections.
     let incoming = TcpListenerStream::new(listener).map(|conn| {
         conn.inspect(|stream| {
@@ -112,37 +166,72 @@ pub async fn run(
             }
         })
     });
-    let mut server_stop = stop.clone();
-    // HTTP/1.1, grpc-web and the embedded page: the browser viewer on this port (see `web`).
-    let server = tonic::transport::Server::builder()
+    let mut builder = tonic::transport::Server::builder()
+        .http2_keepalive_interval(Some(limits::KEEPALIVE_INTERVAL))
+        .http2_keepalive_timeout(Some(limits::KEEPALIVE_TIMEOUT))
+        .max_concurrent_streams(limits::MAX_STREAMS_PER_CONNECTION)
+        .concurrency_limit_per_connection(limits::MAX_CALLS_PER_CONNECTION)
+        .load_shed(true);
+    if let Some(tls) = &config.security.tls {
+        builder = builder.tls_config(
+            ServerTlsConfig::new().identity(Identity::from_pem(&tls.cert_pem, &tls.key_pem)),
+        )?;
+    }
+    let foveal = FovealServer::new(service).max_decoding_message_size(limits::MAX_REQUEST_BYTES);
+    let (drained_tx, drained_rx) = tokio::sync::oneshot::channel::<()>();
+    // HTTP/1.1, grpc-web and the embedded page: the browser viewer on this port (see `web`). The
+    // viewer layer is outermost, so the gate sees grpc-web calls as gRPC and its refusals reach a
+    // browser as grpc-web errors.
+    let server = builder
         .accept_http1(true)
         .layer(web::ViewerLayer)
+        .layer(GateLayer(Arc::clone(&gate)))
         .add_service(health_service)
         .add_service(reflection_v1)
         .add_service(reflection_v1alpha)
-        .add_service(FovealServer::new(service))
-        .serve_with_incoming_shutdown(incoming, async move { server_stop.wait().await });
-    tokio::pin!(server);
+        .add_service(foveal)
+        // New connections keep being accepted while open calls drain, so that they are answered
+        // UNAVAILABLE by the gate instead of waiting in the listen backlog.
+        .serve_with_incoming_shutdown(incoming, async move {
+            // Err: run is returning either way.
+            let _ = drained_rx.await;
+        });
+    let mut server = Box::pin(server);
 
     let served = tokio::select! {
         served = &mut server => served,
         () = shutdown => {
             tracing::info!("shutting down");
-            health.set_not_serving::<FovealServer<FovealService>>().await;
+            watchdog::set(&health, tonic_health::ServingStatus::NotServing).await;
             trigger.trigger();
-            match tokio::time::timeout(config.shutdown_grace, &mut server).await {
+            let drained = tokio::time::timeout(config.shutdown_grace, async {
+                while gate.in_progress() > 0 {
+                    tokio::time::sleep(Duration::from_millis(10)).await;
+                }
+            })
+            .await;
+            if drained.is_err() {
+                tracing::warn!(
+                    grace_s = config.shutdown_grace.as_secs_f64(),
+                    in_progress = gate.in_progress(),
+                    "calls still in progress after the shutdown grace period; abandoning them"
+                );
+            }
+            // Err: the server already ended.
+            let _ = drained_tx.send(());
+            match tokio::time::timeout(SHUTDOWN_LINGER, &mut server).await {
                 Ok(served) => served,
                 Err(_) => {
-                    tracing::warn!(
-                        grace_s = config.shutdown_grace.as_secs_f64(),
-                        "calls still open after the shutdown grace period; abandoning them"
-                    );
+                    tracing::info!("abandoning connections still open (subscribers not reading)");
                     Ok(())
                 }
             }
         }
     };
+    // Closes the listener: from here on a connection attempt is refused at once.
+    drop(server);
     trigger.trigger();
+    watchdog.abort();
     let joined = tokio::task::spawn_blocking(move || frame_loop.stop_and_join()).await?;
     tracing::info!("stopped");
     served?;

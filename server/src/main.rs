@@ -8,7 +8,8 @@ use foveal_server::cli::Cli;
 async fn main() -> anyhow::Result<()> {
     let cli = Cli::parse();
     foveal_server::telemetry::init(&cli.log_level, cli.log_format)?;
-    let config = cli.server_config()?;
+    let mut config = cli.server_config()?;
+    config.security = cli.security()?;
     let listener = tokio::net::TcpListener::bind(cli.addr)
         .await
         .with_context(|| format!("binding {}", cli.addr))?;

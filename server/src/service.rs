@@ -4,6 +4,7 @@
 //! command channel. Nothing here ever waits on the loop except Configure, which waits for the
 //! frame boundary where its new simulation takes over.
 
+use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::{Arc, mpsc};
 use std::time::{Duration, Instant};
 
@@ -14,10 +15,12 @@ use tokio::sync::oneshot;
 use tokio_stream::wrappers::ReceiverStream;
 use tonic::{Request, Response, Status};
 
+use crate::auth::Caller;
 use crate::convert;
 use crate::fanout;
 use crate::frame_loop::{Command, Swap};
 use crate::gaze::{self, GazeValidator};
+use crate::limits::{self, Limits, PushLimiters, RateLimiter};
 use crate::shutdown::Shutdown;
 use crate::state::{Scene, Shared};
 
@@ -34,16 +37,36 @@ pub struct FovealService {
     /// Configure calls are serialised so that each merges onto the configuration the previous one
     /// left, not onto a snapshot both read.
     configure: tokio::sync::Mutex<()>,
+    limits: Limits,
+    push_limiters: PushLimiters,
+    gaze_streams: Arc<AtomicU32>,
+}
+
+/// One StreamGaze's place among [`limits::MAX_GAZE_STREAMS`]; given back on drop.
+struct GazeStreamSlot(Arc<AtomicU32>);
+
+impl Drop for GazeStreamSlot {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::AcqRel);
+    }
 }
 
 impl FovealService {
-    /// A service over the shared state, talking to the loop through `commands`.
-    pub fn new(shared: Arc<Shared>, commands: mpsc::Sender<Command>, shutdown: Shutdown) -> Self {
+    /// A service over the shared state, talking to the loop through `commands`, enforcing `limits`.
+    pub fn new(
+        shared: Arc<Shared>,
+        commands: mpsc::Sender<Command>,
+        shutdown: Shutdown,
+        limits: Limits,
+    ) -> Self {
         Self {
             shared,
             commands,
             shutdown,
             configure: tokio::sync::Mutex::new(()),
+            limits,
+            push_limiters: PushLimiters::default(),
+            gaze_streams: Arc::new(AtomicU32::new(0)),
         }
     }
 }
@@ -55,8 +78,19 @@ impl pb::foveal_server::Foveal for FovealService {
         request: Request<tonic::Streaming<pb::GazeSample>>,
     ) -> Result<Response<pb::StreamGazeSummary>, Status> {
         let peer = request.remote_addr();
+        let open = self.gaze_streams.fetch_add(1, Ordering::AcqRel);
+        let _slot = GazeStreamSlot(Arc::clone(&self.gaze_streams));
+        if open >= limits::MAX_GAZE_STREAMS {
+            return Err(Status::resource_exhausted(format!(
+                "the server already serves {} gaze streams (limit {}): close one or retry later",
+                open,
+                limits::MAX_GAZE_STREAMS
+            )));
+        }
         let mut stream = request.into_inner();
         let mut validator = GazeValidator::new();
+        let mut limiter = RateLimiter::new(self.limits.max_gaze_rate_hz, Instant::now());
+        let mut rate_limited = 0u64;
         let mut shutdown = self.shutdown.clone();
         loop {
             let next = tokio::select! {
@@ -64,37 +98,58 @@ impl pb::foveal_server::Foveal for FovealService {
                 next = stream.message() => next,
             };
             match next {
-                Ok(Some(sample)) => match validator.check(&sample) {
-                    Ok(_) => {
-                        let s = gaze::from_pb(&sample);
-                        self.shared.fixation.push([&s], Instant::now());
-                        self.shared.metrics.gaze(1, 0);
+                Ok(Some(sample)) => {
+                    let now = Instant::now();
+                    if !limiter.allow(now) {
+                        // Over the rate: dropped unread, counted, and the stream goes on.
+                        validator.skip();
+                        rate_limited += 1;
+                        self.shared.metrics.gaze_limited(1);
+                        continue;
                     }
-                    Err(r) => {
-                        if r.kind == RejectKind::Missing {
-                            // A blink or track loss: not gaze, but the processing must know.
+                    match validator.check(&sample) {
+                        Ok(_) => {
                             let s = gaze::from_pb(&sample);
-                            self.shared.fixation.push([&s], Instant::now());
+                            self.shared.fixation.push([&s], now);
+                            self.shared.metrics.gaze(1, 0);
                         }
-                        self.shared.metrics.gaze(0, 1);
-                        tracing::debug!(?peer, field = r.field, reason = %r.reason, "gaze sample rejected");
+                        Err(r) => {
+                            if r.kind == RejectKind::Missing {
+                                // A blink or track loss: not gaze, but the processing must know.
+                                let s = gaze::from_pb(&sample);
+                                self.shared.fixation.push([&s], now);
+                            }
+                            self.shared.metrics.gaze(0, 1);
+                            tracing::debug!(?peer, field = r.field, reason = %r.reason, "gaze sample rejected");
+                        }
                     }
-                },
+                }
                 Ok(None) => break,
                 Err(status) => {
                     // The client vanished or sent garbage; what it sent before still counts.
                     tracing::info!(?peer, accepted = validator.accepted(), %status, "StreamGaze ended by the client side");
-                    return Err(status);
+                    return Err(oversize_is_exhaustion(status));
                 }
             }
+        }
+        if rate_limited > 0 {
+            tracing::info!(
+                ?peer,
+                rate_limited,
+                limit_hz = self.limits.max_gaze_rate_hz,
+                "StreamGaze exceeded the gaze rate limit; samples over it were dropped"
+            );
         }
         tracing::debug!(
             ?peer,
             accepted = validator.accepted(),
             rejected = validator.rejected(),
+            rate_limited,
             "StreamGaze finished"
         );
-        Ok(Response::new(validator.into_summary()))
+        let mut summary = validator.into_summary();
+        summary.rate_limited = rate_limited;
+        Ok(Response::new(summary))
     }
 
     async fn push_gaze(
@@ -102,13 +157,23 @@ impl pb::foveal_server::Foveal for FovealService {
         request: Request<pb::PushGazeRequest>,
     ) -> Result<Response<pb::PushGazeResponse>, Status> {
         let received = Instant::now();
+        let peer = request.remote_addr();
         let req = request.into_inner();
         gaze::check_batch_size(req.samples.len()).map_err(Status::invalid_argument)?;
+        let admitted = self.push_limiters.admit(
+            peer,
+            req.samples.len(),
+            self.limits.max_gaze_rate_hz,
+            received,
+        );
+        let rate_limited = (req.samples.len() - admitted) as u64;
+        if rate_limited > 0 {
+            self.shared.metrics.gaze_limited(rate_limited);
+        }
         let mut validator = GazeValidator::new();
         // Every accepted sample (and every missing one, which marks track loss) goes through the
-        // online processing in order, under one lock.
-        let usable: Vec<_> = req
-            .samples
+        // online processing in order, under one lock; samples over the rate limit are not read.
+        let usable: Vec<_> = req.samples[..admitted]
             .iter()
             .filter(|sample| match validator.check(sample) {
                 Ok(_) => true,
@@ -130,7 +195,9 @@ impl pb::foveal_server::Foveal for FovealService {
                 "PushGaze batch had rejected samples"
             );
         }
-        Ok(Response::new(validator.into_push_response()))
+        let mut response = validator.into_push_response();
+        response.rate_limited = rate_limited;
+        Ok(Response::new(response))
     }
 
     type WatchFramesStream = ReceiverStream<Result<pb::Frame, Status>>;
@@ -141,6 +208,13 @@ impl pb::foveal_server::Foveal for FovealService {
     ) -> Result<Response<Self::WatchFramesStream>, Status> {
         if self.shutdown.is_triggered() {
             return Err(Status::unavailable("server is shutting down"));
+        }
+        let subscribers = self.shared.fanout.subscribers();
+        if subscribers >= limits::MAX_SUBSCRIBERS {
+            return Err(Status::resource_exhausted(format!(
+                "the server already serves {subscribers} WatchFrames subscribers (limit {}): close one or retry later",
+                limits::MAX_SUBSCRIBERS
+            )));
         }
         let req = request.into_inner();
         let sub = self
@@ -164,11 +238,31 @@ impl pb::foveal_server::Foveal for FovealService {
         &self,
         request: Request<pb::ConfigureRequest>,
     ) -> Result<Response<pb::ConfigureResponse>, Status> {
-        let req = request.into_inner().config.unwrap_or_default();
+        let peer = request.remote_addr();
+        let caller = request.extensions().get::<Caller>().copied();
+        let role = caller.map_or("open", |c| c.role_name());
+        let inner = request.into_inner();
+        let mask = inner.update_mask.map(|m| m.paths).unwrap_or_default();
+        let req = inner.config.unwrap_or_default();
         let _serial = self.configure.lock().await;
         let current = self.shared.scene();
-        let (config, rate) = convert::merge_scene_config(&current.sim, current.frame_rate_hz, &req)
-            .map_err(|e| Status::invalid_argument(format!("ConfigureRequest.config: {e}")))?;
+        let merged = if mask.is_empty() {
+            convert::merge_scene_config(&current.sim, current.frame_rate_hz, &req)
+        } else {
+            convert::merge_masked(&current.sim, current.frame_rate_hz, &req, &mask)
+        };
+        let (config, rate) = merged
+            .and_then(|(config, rate)| self.limits.check(&config).map(|_| (config, rate)))
+            .map_err(|e| {
+                tracing::info!(?peer, role, error = %e, "Configure refused");
+                Status::invalid_argument(format!("ConfigureRequest.config: {e}"))
+            })?;
+        let changed = convert::changed_fields(
+            &current.description.config.unwrap_or_default(),
+            &convert::scene_config_to_pb(&config, rate),
+        );
+        // An empty change list is a restart of the same scene (admins use it to replay a run).
+        tracing::info!(?peer, role, changed = ?changed, "Configure accepted");
         // Building can take long (scene generation, calibration of fraction-of-exact budgets):
         // do it on the blocking pool so neither the loop nor the async workers wait for it.
         let built = tokio::task::spawn_blocking(move || {
@@ -208,13 +302,28 @@ impl pb::foveal_server::Foveal for FovealService {
         Ok(Response::new(pb::Status {
             uptime_s: s.started.elapsed().as_secs_f64(),
             frames: m.frames(),
-            fps: m.fps(),
+            fps: m.fps(Instant::now()),
             subscribers: s.fanout.subscribers(),
             gaze_samples_accepted: m.gaze_accepted(),
             gaze_samples_rejected: m.gaze_rejected(),
             gaze_rate_hz: m.gaze_rate_hz(),
             last_fixation: m.last_fixation(),
             config: scene.description.config,
+            gaze_samples_rate_limited: m.gaze_rate_limited(),
         }))
+    }
+}
+
+/// tonic's codec refuses an oversize message with OUT_OF_RANGE; gRPC's convention (and what
+/// clients treat as "too big") is RESOURCE_EXHAUSTED.
+fn oversize_is_exhaustion(status: Status) -> Status {
+    if status.code() == tonic::Code::OutOfRange && status.message().contains("too large") {
+        Status::resource_exhausted(format!(
+            "a message is larger than the server's limit of {} bytes: {}",
+            limits::MAX_REQUEST_BYTES,
+            status.message()
+        ))
+    } else {
+        status
     }
 }

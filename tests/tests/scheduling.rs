@@ -44,6 +44,7 @@ async fn configure(
                 audit: true,
                 ..Default::default()
             }),
+            update_mask: None,
         })
         .await
         .expect("Configure")

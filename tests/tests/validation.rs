@@ -198,6 +198,7 @@ async fn bad_configure_is_invalid_argument_naming_the_field_and_changes_nothing(
         let err = client
             .configure(pb::ConfigureRequest {
                 config: Some(config),
+                update_mask: None,
             })
             .await
             .expect_err("invalid config");
@@ -216,6 +217,7 @@ async fn bad_configure_is_invalid_argument_naming_the_field_and_changes_nothing(
                 seed: 7,
                 ..Default::default()
             }),
+            update_mask: None,
         })
         .await
         .expect("valid config")

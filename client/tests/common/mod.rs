@@ -3,50 +3,39 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
-use foveal_server::{ServerConfig, ServerError};
-use tokio::net::TcpListener;
-use tokio::sync::oneshot;
-use tokio::task::JoinHandle;
+use foveal_server::{Limits, ServerConfig};
 
-/// A running server; [`TestServer::stop`] shuts it down and checks it stopped cleanly.
+/// The shared in-process server of the end-to-end tests, with the client tests' scene and
+/// `addr` as the client takes it (`http://127.0.0.1:PORT`).
 pub struct TestServer {
     /// `http://127.0.0.1:PORT`.
     pub addr: String,
-    stop: Option<oneshot::Sender<()>>,
-    task: JoinHandle<Result<(), ServerError>>,
+    inner: foveal_tests::TestServer,
 }
 
 impl TestServer {
     /// Starts a small scene (150 bodies) whose gaze stays fresh for a minute, so that frames
-    /// keep reporting the last replayed gaze however slow the test machine is.
+    /// keep reporting the last replayed gaze however slow the test machine is. Replays go as
+    /// fast as possible, so the gaze rate limit is lifted.
     pub async fn start() -> Self {
-        let listener = TcpListener::bind("127.0.0.1:0").await.expect("bind");
-        let addr = format!("http://{}", listener.local_addr().expect("local addr"));
         let mut config = ServerConfig::default();
         config.sim.scene.bodies = 150;
         config.gaze_max_age = Duration::from_secs(60);
         config.shutdown_grace = Duration::from_secs(2);
-        let (stop, stopped) = oneshot::channel::<()>();
-        let task = tokio::spawn(foveal_server::run(listener, config, async {
-            let _ = stopped.await;
-        }));
+        config.limits = Limits {
+            max_gaze_rate_hz: 1e9,
+            ..Limits::default()
+        };
+        let inner = foveal_tests::TestServer::start(config).await;
         Self {
-            addr,
-            stop: Some(stop),
-            task,
+            addr: inner.url(),
+            inner,
         }
     }
 
     /// Shuts the server down and waits for it.
-    pub async fn stop(mut self) {
-        if let Some(stop) = self.stop.take() {
-            let _ = stop.send(());
-        }
-        let served = tokio::time::timeout(Duration::from_secs(10), &mut self.task)
-            .await
-            .expect("server stops within 10 s")
-            .expect("server task did not panic");
-        served.expect("server ran cleanly");
+    pub async fn stop(self) {
+        self.inner.stop().await.expect("server ran cleanly");
     }
 }
 
