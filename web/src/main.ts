@@ -16,7 +16,7 @@ import { MouseGaze } from "./gaze";
 import { Overlay, fovealRadius } from "./overlay";
 import { Plots } from "./plots";
 import { applyPoses, applyQuantisedPoses, forEachPair } from "./poses";
-import { connect } from "./rpc";
+import { connect, pageToken } from "./rpc";
 import { COLOURS, SceneView } from "./scene";
 
 function el<T extends HTMLElement>(id: string): T {
@@ -42,7 +42,8 @@ const stats = {
   drawMs: 0,
 };
 
-const client = connect(window.location.origin);
+const token = pageToken();
+const client = connect(window.location.origin, token);
 const view = new SceneView(el<HTMLCanvasElement>("scene"));
 const overlay = new Overlay(el<HTMLCanvasElement>("overlay"));
 const plots = new Plots(el("plots"), 360);
@@ -83,7 +84,15 @@ function setStatus(text: string, kind: "ok" | "error" | "info"): void {
 }
 
 function describe(e: unknown): string {
-  if (e instanceof ConnectError) return e.code === Code.Unknown ? e.rawMessage : `${Code[e.code]}: ${e.rawMessage}`;
+  if (e instanceof ConnectError) {
+    if (e.code === Code.Unauthenticated) {
+      return `${e.rawMessage} (this server wants a token: open ${window.location.origin}/#token=YOUR_TOKEN)`;
+    }
+    if (e.code === Code.PermissionDenied) {
+      return `${e.rawMessage} (a gaze token sends the mouse, an admin token changes the scene)`;
+    }
+    return e.code === Code.Unknown ? e.rawMessage : `${Code[e.code]}: ${e.rawMessage}`;
+  }
   return e instanceof Error ? e.message : String(e);
 }
 
@@ -194,7 +203,14 @@ async function run(): Promise<void> {
       stats.connected = false;
       stats.lastError = describe(e);
       const wait = backoff;
-      setStatus(`cannot reach foveal-server at ${window.location.host}: ${stats.lastError}. Retrying in ${(wait / 1000).toFixed(1)} s…`, "error");
+      const refused = e instanceof ConnectError && (e.code === Code.Unauthenticated || e.code === Code.PermissionDenied);
+      const retry = `Retrying in ${(wait / 1000).toFixed(1)} s…`;
+      setStatus(
+        refused
+          ? `foveal-server at ${window.location.host} refused the page: ${stats.lastError}. ${retry}`
+          : `cannot reach foveal-server at ${window.location.host}: ${stats.lastError}. ${retry}`,
+        "error",
+      );
       await new Promise((r) => setTimeout(r, wait));
       backoff = Math.min(5000, backoff * 2);
     }

@@ -170,6 +170,51 @@ describe("viewer at N = 500 under a sphere-test budget", { skip }, () => {
   });
 });
 
+describe("viewer of a server with tokens", { skip }, () => {
+  const viewerToken = "viewer-token-0123456789";
+  let server, browser;
+
+  before(async () => {
+    server = await startServer(await freePort(), [
+      "-n",
+      "300",
+      "--viewer-token",
+      viewerToken,
+      "--admin-token",
+      "admin-token-0123456789",
+    ]);
+    browser = await launch();
+  });
+
+  after(async () => {
+    await browser?.close();
+    await server?.stop();
+  });
+
+  test("without a token it says how to give one; with #token=... it watches", async () => {
+    const bare = await browser.browser.newPage();
+    await bare.goto(server.url);
+    const refused = await waitFor(async () => {
+      const t = await bare.textContent("#status");
+      return t.includes("refused the page") && t;
+    }, 20_000);
+    assert.ok(refused, `status says "${await bare.textContent("#status")}"`);
+    assert.match(refused, /#token=YOUR_TOKEN/);
+    assert.equal((await stats(bare)).framesReceived, 0);
+    await bare.close();
+
+    const page = await browser.browser.newPage();
+    await page.goto(`${server.url}#token=${viewerToken}`);
+    const watching = await waitFor(async () => {
+      const s = await stats(page);
+      return s.connected && s.framesApplied > 5 && s;
+    }, 30_000);
+    assert.ok(watching, `no frames with the viewer token; status "${await page.textContent("#status")}"`);
+    assert.equal(watching.bodies, 300);
+    await page.close();
+  });
+});
+
 describe("viewer at N = 10,000", { skip }, () => {
   let server, browser, page;
 
