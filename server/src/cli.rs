@@ -5,7 +5,7 @@
 //! rules and messages as Configure.
 
 use std::net::SocketAddr;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::str::FromStr;
 use std::time::Duration;
 
@@ -333,10 +333,14 @@ impl Cli {
             })
         };
         let tls = match (&self.tls_cert, &self.tls_key) {
-            (Some(cert), Some(key)) => Some(TlsIdentity {
-                cert_pem: read("--tls-cert", cert)?,
-                key_pem: read("--tls-key", key)?,
-            }),
+            (Some(cert), Some(key)) => {
+                let identity = TlsIdentity {
+                    cert_pem: read("--tls-cert", cert)?,
+                    key_pem: read("--tls-key", key)?,
+                };
+                check_pem(&identity, cert, key)?;
+                Some(identity)
+            }
             _ => None,
         };
         Ok(Security {
@@ -345,6 +349,32 @@ impl Cli {
             insecure: self.insecure,
         })
     }
+}
+
+/// Refuse TLS files that hold no PEM certificate or no PEM private key at start-up, naming the
+/// flag, instead of failing later inside the transport with a message about neither.
+fn check_pem(identity: &TlsIdentity, cert: &Path, key: &Path) -> Result<(), ServerError> {
+    use rustls_pki_types::pem::PemObject;
+    use rustls_pki_types::{CertificateDer, PrivateKeyDer};
+    let bad = |what: &'static str, path: &Path, reason: String| ServerError::TlsPem {
+        what,
+        path: path.display().to_string(),
+        reason,
+    };
+    let certs: Result<Vec<_>, _> = CertificateDer::pem_slice_iter(&identity.cert_pem).collect();
+    match certs {
+        Ok(c) if !c.is_empty() => {}
+        Ok(_) => return Err(bad("--tls-cert", cert, "holds no CERTIFICATE block".into())),
+        Err(e) => return Err(bad("--tls-cert", cert, format!("is not valid PEM ({e})"))),
+    }
+    PrivateKeyDer::from_pem_slice(&identity.key_pem).map_err(|e| {
+        bad(
+            "--tls-key",
+            key,
+            format!("holds no usable private key ({e})"),
+        )
+    })?;
+    Ok(())
 }
 
 /// `--gaze-detector`.

@@ -42,6 +42,16 @@ pub enum ServerError {
         #[source]
         source: std::io::Error,
     },
+    /// A TLS file was read but holds no usable PEM certificate or private key.
+    #[error("{what} {path}: {reason}; give a PEM file (e.g. from `openssl req -x509 -newkey ...`)")]
+    TlsPem {
+        /// `--tls-cert` or `--tls-key`.
+        what: &'static str,
+        /// The path.
+        path: String,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// Building the initial simulation was cancelled or panicked.
     #[error("building the initial simulation: {0}")]
     Build(#[from] tokio::task::JoinError),

@@ -3,6 +3,7 @@
 
 use std::time::Duration;
 
+use clap::Parser;
 use foveal_proto::pb;
 use foveal_server::{Role, ServerConfig, ServerError, Tokens};
 use foveal_tests::{TestCa, TestServer, sample, small_config, within};
@@ -205,4 +206,50 @@ async fn beyond_loopback_needs_tokens_or_insecure() {
     run_on_all_interfaces(insecure)
         .await
         .expect("--insecure is the operator's choice");
+}
+
+#[test]
+fn tls_files_that_are_not_pem_are_refused_at_start_up_naming_the_flag() {
+    let dir = std::env::temp_dir().join(format!("foveal-tls-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    let ca = TestCa::new();
+    let (cert, key, junk) = (
+        dir.join("cert.pem"),
+        dir.join("key.pem"),
+        dir.join("junk.pem"),
+    );
+    std::fs::write(&cert, &ca.cert_pem).expect("cert");
+    std::fs::write(&key, &ca.key_pem).expect("key");
+    std::fs::write(&junk, "not a certificate\n").expect("junk");
+    let cli = |c: &std::path::Path, k: &std::path::Path| {
+        foveal_server::cli::Cli::try_parse_from([
+            "foveal-server".as_ref(),
+            "--tls-cert".as_ref(),
+            c.as_os_str(),
+            "--tls-key".as_ref(),
+            k.as_os_str(),
+        ])
+        .expect("flags parse")
+    };
+    let good = cli(&cert, &key)
+        .security()
+        .expect("a generated certificate and key");
+    assert!(good.tls.is_some());
+    let e = cli(&junk, &key)
+        .security()
+        .expect_err("junk certificate")
+        .to_string();
+    assert!(e.contains("--tls-cert") && e.contains("CERTIFICATE"), "{e}");
+    let e = cli(&cert, &junk)
+        .security()
+        .expect_err("junk key")
+        .to_string();
+    assert!(e.contains("--tls-key") && e.contains("private key"), "{e}");
+    // A certificate where the key should be is no key either.
+    let e = cli(&cert, &cert)
+        .security()
+        .expect_err("certificate as key")
+        .to_string();
+    assert!(e.contains("--tls-key"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
 }
