@@ -174,17 +174,11 @@ pub struct Window {
     bodies: Option<usize>,
 }
 
-/// Nearest-rank percentile `q` (0..=1) of sorted `values`; `None` when empty.
+/// Nearest-rank percentile `q` (0..=1) of sorted `values` ([`crate::gaze::quantile`]); `None`
+/// when empty.
 #[must_use]
 pub fn percentile(sorted: &[f64], q: f64) -> Option<f64> {
-    if sorted.is_empty() {
-        return None;
-    }
-    let rank = (q.clamp(0.0, 1.0) * sorted.len() as f64).ceil();
-    // rank is in 0..=len, an exact small integer.
-    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-    let index = (rank as usize).saturating_sub(1).min(sorted.len() - 1);
-    Some(sorted[index])
+    crate::gaze::quantile::nearest_rank(sorted, q)
 }
 
 impl Window {

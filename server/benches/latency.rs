@@ -32,12 +32,9 @@ fn env_or<T: std::str::FromStr>(name: &str, default: T) -> T {
         .unwrap_or(default)
 }
 
+/// Nearest-rank quantile ([`foveal_gaze::quantile`]) of sorted durations, ms; NaN for none.
 fn quantile_ms(sorted: &[Duration], q: f64) -> f64 {
-    if sorted.is_empty() {
-        return f64::NAN;
-    }
-    let i = (q * (sorted.len() - 1) as f64).round() as usize;
-    sorted[i.min(sorted.len() - 1)].as_secs_f64() * 1e3
+    foveal_gaze::quantile::nearest_rank(sorted, q).map_or(f64::NAN, |d| d.as_secs_f64() * 1e3)
 }
 
 async fn latency(

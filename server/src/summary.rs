@@ -22,15 +22,10 @@ pub struct Summary {
     gaze_at_start: u64,
 }
 
-/// The `q`-quantile (0..=1) of sorted values: the element at index round(q·(n−1)), i.e. the order
-/// statistic nearest the linear-interpolation position (for p99 of 100 values, the 99th); 0 for
-/// none.
+/// The `q`-quantile (0..=1) of sorted values by nearest rank, the one definition of every figure
+/// foveal prints ([`foveal_gaze::quantile`]); 0 for none.
 pub fn quantile(sorted: &[u64], q: f64) -> u64 {
-    if sorted.is_empty() {
-        return 0;
-    }
-    let rank = (q.clamp(0.0, 1.0) * (sorted.len() - 1) as f64).round() as usize;
-    sorted[rank.min(sorted.len() - 1)]
+    foveal_gaze::quantile::nearest_rank(sorted, q).unwrap_or(0)
 }
 
 fn ms(ns: u64) -> f64 {
@@ -106,7 +101,7 @@ mod tests {
     #[test]
     fn quantiles_by_nearest_rank() {
         let v: Vec<u64> = (1..=100).collect();
-        assert_eq!(quantile(&v, 0.5), 51);
+        assert_eq!(quantile(&v, 0.5), 50);
         assert_eq!(quantile(&v, 0.99), 99);
         assert_eq!(quantile(&v, 1.0), 100);
         assert_eq!(quantile(&[], 0.5), 0);

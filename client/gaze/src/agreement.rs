@@ -60,18 +60,9 @@ fn ratio(a: usize, b: usize) -> f64 {
     }
 }
 
-/// The value at quantile `q` (nearest rank) of `sorted`, 0 when empty.
+/// The value at quantile `q` (nearest rank, [`crate::quantile`]) of `sorted`, 0 when empty.
 fn nearest_rank(sorted: &[f64], q: f64) -> f64 {
-    if sorted.is_empty() {
-        return 0.0;
-    }
-    #[allow(
-        clippy::cast_precision_loss,
-        clippy::cast_possible_truncation,
-        clippy::cast_sign_loss
-    )]
-    let rank = (q * sorted.len() as f64).ceil() as usize;
-    sorted[rank.clamp(1, sorted.len()) - 1]
+    crate::quantile::nearest_rank(sorted, q).unwrap_or(0.0)
 }
 
 fn median(sorted: &[f64]) -> f64 {

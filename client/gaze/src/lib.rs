@@ -45,6 +45,7 @@ pub mod fixation_list;
 pub mod geometry;
 pub mod online;
 pub mod opengaze;
+pub mod quantile;
 pub mod rng;
 pub mod script;
 pub mod validate;

@@ -399,13 +399,9 @@ fn phases(p: &PhaseProfile) -> Vec<(String, u64)> {
     out
 }
 
-/// Nearest-rank percentile of sorted values.
+/// Nearest-rank percentile of sorted values ([`foveal_gaze::quantile`]); NaN for none.
 fn percentile(sorted: &[f64], q: f64) -> f64 {
-    if sorted.is_empty() {
-        return f64::NAN;
-    }
-    let rank = (q * sorted.len() as f64).ceil() as usize;
-    sorted[rank.clamp(1, sorted.len()) - 1]
+    foveal_gaze::quantile::nearest_rank(sorted, q).unwrap_or(f64::NAN)
 }
 
 /// The three load averages of `/proc/loadavg`.
