@@ -254,17 +254,8 @@ impl<R: BufRead> AscReader<R> {
             },
             t_ms,
         );
-        let sample = match normalise(position(line, tokens, 1, ("x", "y"))?)? {
-            Some((x, y, validity)) => GazeSample {
-                t_s,
-                x,
-                y,
-                validity,
-                eye,
-                fixation,
-            },
-            None => GazeSample::missing(t_s, eye).with_fixation(fixation),
-        };
+        let reading = normalise(position(line, tokens, 1, ("x", "y"))?)?;
+        let sample = GazeSample::from_reading(t_s, reading, eye, fixation);
         Ok((sample, None))
     }
 }

@@ -352,17 +352,7 @@ fn parse_record(
         .eye
         .or(columns.named_eye)
         .unwrap_or(Eye::Unspecified);
-    let sample = match readings[0] {
-        Some((x, y, validity)) => GazeSample {
-            t_s,
-            x,
-            y,
-            validity,
-            eye,
-            fixation,
-        },
-        None => GazeSample::missing(t_s, eye).with_fixation(fixation),
-    };
+    let sample = GazeSample::from_reading(t_s, readings[0], eye, fixation);
     Ok((sample, None))
 }
 

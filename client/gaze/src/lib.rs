@@ -117,6 +117,23 @@ impl GazeSample {
         }
     }
 
+    /// The sample of one eye's reading at `t_s`: its position, or a missing sample when the eye
+    /// gave none; the tracker's fixation flag either way.
+    #[must_use]
+    pub fn from_reading(t_s: f64, reading: EyeReading, eye: Eye, fixation: Option<bool>) -> Self {
+        match reading {
+            Some((x, y, validity)) => Self {
+                t_s,
+                x,
+                y,
+                validity,
+                eye,
+                fixation,
+            },
+            None => Self::missing(t_s, eye).with_fixation(fixation),
+        }
+    }
+
     /// Whether the sample carries a position (`validity > 0`).
     #[must_use]
     pub fn is_valid(&self) -> bool {
@@ -162,17 +179,7 @@ impl Binocular {
         right: EyeReading,
         fixation: Option<bool>,
     ) -> (GazeSample, Option<GazeSample>) {
-        let one = |reading: EyeReading, eye| match reading {
-            Some((x, y, validity)) => GazeSample {
-                t_s,
-                x,
-                y,
-                validity,
-                eye,
-                fixation,
-            },
-            None => GazeSample::missing(t_s, eye).with_fixation(fixation),
-        };
+        let one = |reading: EyeReading, eye| GazeSample::from_reading(t_s, reading, eye, fixation);
         match self {
             Self::Mean => {
                 let mean = match (left, right) {
