@@ -407,13 +407,7 @@ impl Cli {
     ) -> foveal_gaze::online::ProcessorConfig {
         use foveal_gaze::Binocular;
         use foveal_gaze::detect::{DetectorParams, IdtParams, IvtParams};
-        let (w, h) = (f64::from(display.width_px), f64::from(display.height_px));
-        let diagonal_cm = display.diagonal_in * 2.54;
-        let geometry = foveal_gaze::geometry::ViewingGeometry {
-            width_cm: diagonal_cm * w / w.hypot(h),
-            height_cm: diagonal_cm * h / w.hypot(h),
-            distance_cm: display.viewing_distance_cm,
-        };
+        let geometry = crate::fixation_cell::viewing_geometry(display);
         foveal_gaze::online::ProcessorConfig {
             eyes: match self.gaze_eyes {
                 GazeEyesArg::Mean => Binocular::Mean,

@@ -488,6 +488,7 @@ pub fn fixation_used(r: &FrameReport, resolved: &ResolvedFixation) -> pb::Fixati
             x: f.x,
             y: f.y,
             age_s: f.age_s,
+            widen_deg: f.uncertainty_deg,
             ..base
         },
         None => pb::Fixation {

@@ -1,4 +1,5 @@
-//! The latest gaze: a single-value cell written by the gaze handlers and read by the frame loop.
+//! The latest gaze: per-source online processing written by the gaze handlers and read by the
+//! frame loop.
 //!
 //! Writers push each sample through the online processing of `foveal-gaze` ([`GazeProcessor`]:
 //! eyes combined, optional 1€ filter and fixation detector, track-loss handling); the loop reads
@@ -6,23 +7,121 @@
 //! critical section is one sample's processing (well under a microsecond, see
 //! docs/BENCHMARKS.md), so the mutex never holds the loop up measurably.
 //!
-//! One processor serves every gaze source: samples from two streams at once interleave (the
-//! processor starts afresh when the tracker clock jumps, so a new stream after a restart works).
+//! # Several sources
+//! Every source (a `StreamGaze` call; a `PushGaze` client, by peer address and its `source`
+//! name) has its own processor, so two trackers never interleave in one filter, detector or
+//! clock estimate. One source steers a frame: the newest *live* one (a sample received within
+//! the gaze age limit), because a client that starts sending while another runs is someone
+//! taking over (the browser viewer switched to the mouse, a second tracker brought up); when it
+//! goes quiet the next newest live source steers again. With no live source, the source heard
+//! from last reports its (stale or lost) state. A source silent for [`FORGET_AFTER`] is
+//! forgotten, and at most [`MAX_SOURCES`] are kept (the longest silent goes first).
 
 use std::sync::{Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
 use foveal_engine::Fixation;
 use foveal_gaze::GazeSample;
-use foveal_gaze::online::{GazeProcessor, ProcessorConfig, Track};
+use foveal_gaze::geometry::ViewingGeometry;
+use foveal_gaze::online::{GazeProcessor, GazeState, ProcessorConfig, Track};
 use foveal_proto::pb::FixationSource;
 
 /// Where the fixation goes when gaze is missing or stale: the screen centre.
 pub const FALLBACK: (f64, f64) = (0.5, 0.5);
 
+/// A source silent this long is forgotten (its state would only ever be stale again).
+pub const FORGET_AFTER: Duration = Duration::from_secs(60);
+
+/// Most sources kept at once: the server's gaze-stream limit plus room for push clients.
+pub const MAX_SOURCES: usize = 64;
+
+/// The gaze processing's view of the engine's display: its physical size from the diagonal
+/// and aspect ratio, and the viewing distance (degrees are then the same on both sides).
+pub fn viewing_geometry(display: &foveal_engine::Display) -> ViewingGeometry {
+    let (w, h) = (f64::from(display.width_px), f64::from(display.height_px));
+    let diagonal_cm = display.diagonal_in * 2.54;
+    ViewingGeometry {
+        width_cm: diagonal_cm * w / w.hypot(h),
+        height_cm: diagonal_cm * h / w.hypot(h),
+        distance_cm: display.viewing_distance_cm,
+    }
+}
+
+/// Which client a sample came from.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum SourceKey {
+    /// One `StreamGaze` call, numbered by the server.
+    Stream(u64),
+    /// A `PushGaze` client: its peer address (IP, or none in-process) and `source` name.
+    Push(Option<std::net::IpAddr>, String),
+}
+
+#[derive(Debug)]
+struct Source {
+    key: SourceKey,
+    processor: GazeProcessor,
+    first_received_s: f64,
+    last_received_s: f64,
+}
+
 #[derive(Debug)]
 struct Inner {
-    processor: GazeProcessor,
+    config: ProcessorConfig,
+    sources: Vec<Source>,
+    /// The source that steered the last frame (to log a change of hands once).
+    steering: Option<SourceKey>,
+}
+
+impl Inner {
+    /// The source for `key`, created if new (forgetting silent ones to make room).
+    fn source(&mut self, key: &SourceKey, now_s: f64) -> &mut Source {
+        if let Some(i) = self.sources.iter().position(|s| &s.key == key) {
+            return &mut self.sources[i];
+        }
+        let forget = FORGET_AFTER.as_secs_f64();
+        self.sources.retain(|s| now_s - s.last_received_s <= forget);
+        if self.sources.len() >= MAX_SOURCES
+            && let Some(oldest) = self
+                .sources
+                .iter()
+                .enumerate()
+                .min_by(|a, b| a.1.last_received_s.total_cmp(&b.1.last_received_s))
+                .map(|(i, _)| i)
+        {
+            self.sources.swap_remove(oldest);
+        }
+        self.sources.push(Source {
+            key: key.clone(),
+            processor: GazeProcessor::new(self.config),
+            first_received_s: now_s,
+            last_received_s: now_s,
+        });
+        let last = self.sources.len() - 1;
+        &mut self.sources[last]
+    }
+
+    /// The source that steers at `now_s` and its state (see the module documentation): the
+    /// newest live source with a point to steer by, else the newest live one, else the one heard
+    /// from last.
+    fn steering<'a>(&'a self, now_s: f64, max_age_s: f64) -> Option<(&'a Source, GazeState)> {
+        let mut live: Vec<&'a Source> = self
+            .sources
+            .iter()
+            .filter(|s| now_s - s.last_received_s <= max_age_s)
+            .collect();
+        live.sort_by(|a, b| b.first_received_s.total_cmp(&a.first_received_s));
+        let with_state = |s: &'a Source| (s, s.processor.state(now_s));
+        live.iter()
+            .map(|&s| with_state(s))
+            .find(|(_, st)| st.steer.is_some())
+            .or_else(|| live.first().map(|&s| with_state(s)))
+            .or_else(|| {
+                self.sources
+                    .iter()
+                    .max_by(|a, b| a.last_received_s.total_cmp(&b.last_received_s))
+                    .map(with_state)
+            })
+    }
 }
 
 /// The online gaze processing and the clock its receipt times are on.
@@ -55,7 +154,9 @@ pub struct RawGaze {
 /// The fixation a frame uses and why.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ResolvedFixation {
-    /// Handed to the engine (`age_s` is the sample's age at frame start, 0 with no gaze).
+    /// Handed to the engine (`age_s` is the sample's age at frame start, 0 with no gaze; while
+    /// the track is lost and widened, `uncertainty_deg` is the widening, so the schedulers treat
+    /// the widened region as foveal).
     pub fixation: Fixation,
     /// Gaze, or which fallback.
     pub source: FixationSource,
@@ -74,12 +175,14 @@ impl FixationCell {
         Self::with_config(ProcessorConfig::default())
     }
 
-    /// A cell with this processing (assumed valid).
+    /// A cell with this processing (assumed valid) for every source.
     pub fn with_config(config: ProcessorConfig) -> Self {
         Self {
             epoch: Instant::now(),
             inner: Mutex::new(Inner {
-                processor: GazeProcessor::new(config),
+                config,
+                sources: Vec::new(),
+                steering: None,
             }),
         }
     }
@@ -88,36 +191,89 @@ impl FixationCell {
         at.saturating_duration_since(self.epoch).as_secs_f64()
     }
 
-    /// Pushes samples received at `received`, in order: accepted ones, and missing ones
-    /// (validity 0), which mark track loss.
-    pub fn push<'a>(&self, samples: impl IntoIterator<Item = &'a GazeSample>, received: Instant) {
+    /// Degrees are measured on `geometry` from now on, for every source (the display changed).
+    pub fn set_geometry(&self, geometry: ViewingGeometry) {
+        let mut inner = self.inner.lock().unwrap_or_else(PoisonError::into_inner);
+        inner.config.geometry = geometry;
+        for s in &mut inner.sources {
+            s.processor.set_geometry(geometry);
+        }
+    }
+
+    /// The geometry degrees are measured on.
+    #[cfg(test)]
+    pub fn geometry(&self) -> ViewingGeometry {
+        self.inner
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .config
+            .geometry
+    }
+
+    /// Sources heard from within `max_age` of `now`.
+    pub fn live_sources(&self, now: Instant, max_age: Duration) -> usize {
+        let now_s = self.seconds(now);
+        let inner = self.inner.lock().unwrap_or_else(PoisonError::into_inner);
+        inner
+            .sources
+            .iter()
+            .filter(|s| now_s - s.last_received_s <= max_age.as_secs_f64())
+            .count()
+    }
+
+    /// Pushes samples of `source` received at `received`, in order: accepted ones, and missing
+    /// ones (validity 0), which mark track loss.
+    pub fn push<'a>(
+        &self,
+        source: &SourceKey,
+        samples: impl IntoIterator<Item = &'a GazeSample>,
+        received: Instant,
+    ) {
         let received_s = self.seconds(received);
         let mut inner = self.inner.lock().unwrap_or_else(PoisonError::into_inner);
+        let src = inner.source(source, received_s);
+        src.last_received_s = src.last_received_s.max(received_s);
         for s in samples {
-            inner.processor.push(s, received_s);
+            src.processor.push(s, received_s);
         }
     }
 
     #[cfg(test)]
-    /// Makes (x, y), received at `received`, the latest gaze: a valid sample of unknown eye,
-    /// stamped with its receipt time (so it has no excess transit).
+    /// Makes (x, y), received at `received`, the latest gaze of source `Stream(0)`: a valid
+    /// sample of unknown eye, stamped with its receipt time (so it has no excess transit).
     pub fn store(&self, x: f64, y: f64, received: Instant) {
         let t_s = self.seconds(received);
         let s = GazeSample::valid(t_s, x, y, foveal_gaze::Eye::Unspecified);
-        self.push([&s], received);
+        self.push(&SourceKey::Stream(0), [&s], received);
     }
 
-    /// The fixation for a frame starting at `now`: the processing's steering point if it is at
-    /// most `max_age` old, else the screen centre flagged as a fallback (stale gaze keeps its age
-    /// for the record).
+    /// The fixation for a frame starting at `now`: the steering source's point if it is at most
+    /// `max_age` old (while the track is held or widened: if the source sent anything within
+    /// `max_age`), else the screen centre flagged as a fallback (stale gaze keeps its age for the
+    /// record).
     pub fn resolve(&self, now: Instant, max_age: Duration) -> ResolvedFixation {
         let now_s = self.seconds(now);
-        let state = self
-            .inner
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .processor
-            .state(now_s);
+        let mut inner = self.inner.lock().unwrap_or_else(PoisonError::into_inner);
+        let steering = inner.steering(now_s, max_age.as_secs_f64());
+        let key = steering.as_ref().map(|(s, _)| s.key.clone());
+        let silent_s = steering
+            .as_ref()
+            .map_or(0.0, |(s, _)| now_s - s.last_received_s);
+        let state = steering.map(|(_, st)| st);
+        if key.is_some() && key != inner.steering {
+            tracing::info!(source = ?key, "gaze source steering");
+            inner.steering = key;
+        }
+        drop(inner);
+        let Some(state) = state else {
+            return ResolvedFixation {
+                fixation: Fixation::at(FALLBACK.0, FALLBACK.1),
+                source: FixationSource::FallbackNoGaze,
+                raw: None,
+                track: Track::NoGaze,
+                widen_deg: 0.0,
+            };
+        };
         // Since receipt (a sample stored after `now` was taken has 0, not a negative age), plus
         // the delay beyond the source's fastest recent transit (`foveal_gaze::clock`).
         let raw = state.raw.map(|r| RawGaze {
@@ -128,9 +284,8 @@ impl FixationCell {
         });
         let centre = |age_s, source| ResolvedFixation {
             fixation: Fixation {
-                x: FALLBACK.0,
-                y: FALLBACK.1,
                 age_s,
+                ..Fixation::at(FALLBACK.0, FALLBACK.1)
             },
             source,
             raw,
@@ -145,15 +300,21 @@ impl FixationCell {
             ),
             (_, Some(p)) => {
                 let age_s = p.age_s(now_s);
-                if age_s > max_age.as_secs_f64() {
+                // While the eye is lost and the tracker says so, the processing holds and widens
+                // the last fixation however old it is; only a source gone silent is stale.
+                let stale = match state.track {
+                    Track::Holding | Track::Widened => silent_s > max_age.as_secs_f64(),
+                    _ => age_s > max_age.as_secs_f64(),
+                };
+                if stale {
                     centre(age_s, FixationSource::FallbackStale)
                 } else {
                     ResolvedFixation {
                         fixation: Fixation {
-                            x: p.x,
-                            y: p.y,
                             age_s,
-                        },
+                            ..Fixation::at(p.x, p.y)
+                        }
+                        .with_uncertainty(state.widen_deg),
                         source: FixationSource::Gaze,
                         raw,
                         track: state.track,
@@ -203,15 +364,20 @@ mod tests {
         let fixation: Vec<GazeSample> = (0..100)
             .map(|i| GazeSample::valid(f64::from(i) * 0.001, 0.25, 0.25, Eye::Left))
             .collect();
-        cell.push(&fixation, t0);
+        cell.push(&SourceKey::Stream(0), &fixation, t0);
         let saccade = [GazeSample::valid(0.1, 0.75, 0.25, Eye::Left)];
-        cell.push(&saccade, t0 + Duration::from_millis(1));
+        cell.push(
+            &SourceKey::Stream(0),
+            &saccade,
+            t0 + Duration::from_millis(1),
+        );
         let r = cell.resolve(t0 + Duration::from_millis(2), Duration::from_millis(500));
         assert_eq!((r.source, r.track), (FixationSource::Gaze, Track::Saccade));
         assert_eq!((r.fixation.x, r.fixation.y), (0.25, 0.25));
         assert_eq!(r.raw.map(|g| (g.x, g.tracker_time_s)), Some((0.75, 0.1)));
         // Then the eye is lost for good: fallback, flagged.
         cell.push(
+            &SourceKey::Stream(0),
             &[GazeSample::missing(0.101, Eye::Left)],
             t0 + Duration::from_millis(3),
         );
@@ -220,5 +386,119 @@ mod tests {
             (r.source, r.track),
             (FixationSource::FallbackTrackLost, Track::Lost)
         );
+    }
+
+    fn fixation_run(t0_s: f64, x: f64, y: f64) -> Vec<GazeSample> {
+        (0..100)
+            .map(|i| GazeSample::valid(t0_s + f64::from(i) * 0.001, x, y, Eye::Left))
+            .collect()
+    }
+
+    #[test]
+    fn each_source_has_its_own_processing_and_the_newest_live_one_steers() {
+        let cell = FixationCell::with_config(ProcessorConfig {
+            detector: Some(DetectorParams::default()),
+            ..ProcessorConfig::default()
+        });
+        let (a, b) = (SourceKey::Stream(1), SourceKey::Stream(2));
+        let t0 = Instant::now();
+        let max = Duration::from_millis(500);
+        // Two trackers at once, sample by sample interleaved, on clocks 100 s apart: in one
+        // processor they would be a saccade every sample (and clock resets); apart, each holds a
+        // fixation.
+        let (sa, sb) = (fixation_run(100.0, 0.2, 0.2), fixation_run(0.0, 0.8, 0.8));
+        for (i, (x, y)) in sa.iter().zip(&sb).enumerate() {
+            let at = t0 + Duration::from_millis(i as u64);
+            cell.push(&a, [x], at);
+            cell.push(&b, [y], at + Duration::from_micros(500));
+        }
+        assert_eq!(cell.live_sources(t0 + Duration::from_millis(100), max), 2);
+        let r = cell.resolve(t0 + Duration::from_millis(100), max);
+        assert_eq!((r.source, r.track), (FixationSource::Gaze, Track::Fixation));
+        // B started last (by a hair): it steers.
+        assert!((r.fixation.x - 0.8).abs() < 1e-9 && (r.fixation.y - 0.8).abs() < 1e-9);
+        // B goes quiet; A keeps sending: once B is stale, A steers with its own fixation.
+        for (i, x) in fixation_run(100.1, 0.2, 0.2).iter().enumerate() {
+            cell.push(&a, [x], t0 + Duration::from_millis(100 + 5 * i as u64));
+        }
+        let r = cell.resolve(t0 + Duration::from_millis(650), max);
+        assert_eq!((r.source, r.track), (FixationSource::Gaze, Track::Fixation));
+        assert!((r.fixation.x - 0.2).abs() < 1e-9 && (r.fixation.y - 0.2).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_widened_track_makes_the_engine_treat_the_widened_region_as_foveal() {
+        let cell = FixationCell::new();
+        let key = SourceKey::Push(None, "tracker".into());
+        let t0 = Instant::now();
+        cell.push(&key, &[GazeSample::valid(1.0, 0.3, 0.4, Eye::Left)], t0);
+        cell.push(&key, &[GazeSample::missing(1.001, Eye::Left)], t0);
+        // The gaze age limit is shorter than the loss: a source that reports the loss is live.
+        let max = Duration::from_millis(200);
+        cell.push(
+            &key,
+            &[GazeSample::missing(1.4, Eye::Left)],
+            t0 + Duration::from_millis(400),
+        );
+        let held = cell.resolve(t0 + Duration::from_millis(100), max);
+        assert_eq!(held.track, Track::Holding);
+        assert_eq!(held.fixation.uncertainty_deg, 0.0);
+        // 300 ms hold, then 20 deg/s: 0.5 s into the loss the region is 4 degrees wider.
+        let widened = cell.resolve(t0 + Duration::from_millis(500), max);
+        assert_eq!(
+            (widened.source, widened.track),
+            (FixationSource::Gaze, Track::Widened)
+        );
+        assert_eq!((widened.fixation.x, widened.fixation.y), (0.3, 0.4));
+        assert!(
+            (widened.fixation.uncertainty_deg - 4.0).abs() < 0.05,
+            "{widened:?}"
+        );
+        assert_eq!(widened.fixation.uncertainty_deg, widened.widen_deg);
+        assert!(widened.fixation.is_usable());
+        // Then the tracker goes silent too: stale.
+        let silent = cell.resolve(t0 + Duration::from_millis(700), max);
+        assert_eq!(silent.source, FixationSource::FallbackStale);
+    }
+
+    #[test]
+    fn a_new_display_reaches_every_source_and_later_ones() {
+        let cell = FixationCell::new();
+        let t0 = Instant::now();
+        cell.store(0.5, 0.5, t0);
+        let wide = ViewingGeometry {
+            width_cm: 120.0,
+            height_cm: 68.0,
+            distance_cm: 200.0,
+        };
+        cell.set_geometry(wide);
+        assert_eq!(cell.geometry(), wide);
+        let inner = cell.inner.lock().expect("not poisoned");
+        assert!(
+            inner
+                .sources
+                .iter()
+                .all(|s| s.processor.config().geometry == wide)
+        );
+        assert_eq!(inner.config.geometry, wide);
+    }
+
+    #[test]
+    fn sources_are_bounded_and_silent_ones_forgotten() {
+        let cell = FixationCell::new();
+        let t0 = Instant::now();
+        let s = [GazeSample::valid(1.0, 0.5, 0.5, Eye::Left)];
+        for i in 0..(MAX_SOURCES as u64 + 10) {
+            cell.push(&SourceKey::Stream(i), &s, t0 + Duration::from_millis(i));
+        }
+        let n = cell.inner.lock().expect("not poisoned").sources.len();
+        assert_eq!(n, MAX_SOURCES);
+        cell.push(
+            &SourceKey::Stream(999),
+            &s,
+            t0 + FORGET_AFTER + Duration::from_secs(1),
+        );
+        let inner = cell.inner.lock().expect("not poisoned");
+        assert_eq!(inner.sources.len(), 1, "every silent source forgotten");
     }
 }

@@ -4,7 +4,7 @@
 //! command channel. Nothing here ever waits on the loop except Configure, which waits for the
 //! frame boundary where its new simulation takes over.
 
-use std::sync::atomic::{AtomicU32, Ordering};
+use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
 use std::sync::{Arc, mpsc};
 use std::time::{Duration, Instant};
 
@@ -18,6 +18,7 @@ use tonic::{Request, Response, Status};
 use crate::auth::Caller;
 use crate::convert;
 use crate::fanout;
+use crate::fixation_cell::SourceKey;
 use crate::frame_loop::{Command, Swap};
 use crate::gaze::{self, GazeValidator};
 use crate::limits::{self, Limits, PushLimiters, RateLimiter};
@@ -40,6 +41,8 @@ pub struct FovealService {
     limits: Limits,
     push_limiters: PushLimiters,
     gaze_streams: Arc<AtomicU32>,
+    /// Numbers StreamGaze calls: each is its own gaze source.
+    next_stream: AtomicU64,
 }
 
 /// One StreamGaze's place among [`limits::MAX_GAZE_STREAMS`]; given back on drop.
@@ -67,6 +70,7 @@ impl FovealService {
             limits,
             push_limiters: PushLimiters::default(),
             gaze_streams: Arc::new(AtomicU32::new(0)),
+            next_stream: AtomicU64::new(0),
         }
     }
 }
@@ -88,6 +92,7 @@ impl pb::foveal_server::Foveal for FovealService {
             )));
         }
         let mut stream = request.into_inner();
+        let key = SourceKey::Stream(self.next_stream.fetch_add(1, Ordering::Relaxed));
         let mut validator = GazeValidator::new();
         let mut limiter = RateLimiter::new(self.limits.max_gaze_rate_hz, Instant::now());
         let mut rate_limited = 0u64;
@@ -110,14 +115,14 @@ impl pb::foveal_server::Foveal for FovealService {
                     match validator.check(&sample) {
                         Ok(_) => {
                             let s = gaze::from_pb(&sample);
-                            self.shared.fixation.push([&s], now);
+                            self.shared.fixation.push(&key, [&s], now);
                             self.shared.metrics.gaze(1, 0);
                         }
                         Err(r) => {
                             if r.kind == RejectKind::Missing {
                                 // A blink or track loss: not gaze, but the processing must know.
                                 let s = gaze::from_pb(&sample);
-                                self.shared.fixation.push([&s], now);
+                                self.shared.fixation.push(&key, [&s], now);
                             }
                             self.shared.metrics.gaze(0, 1);
                             tracing::debug!(?peer, field = r.field, reason = %r.reason, "gaze sample rejected");
@@ -182,7 +187,8 @@ impl pb::foveal_server::Foveal for FovealService {
             .map(gaze::from_pb)
             .collect();
         if !usable.is_empty() {
-            self.shared.fixation.push(&usable, received);
+            let key = SourceKey::Push(peer.map(|p| p.ip()), req.source.clone());
+            self.shared.fixation.push(&key, &usable, received);
         }
         self.shared
             .metrics
@@ -310,6 +316,7 @@ impl pb::foveal_server::Foveal for FovealService {
             last_fixation: m.last_fixation(),
             config: scene.description.config,
             gaze_samples_rate_limited: m.gaze_rate_limited(),
+            gaze_sources_live: s.fixation.live_sources(Instant::now(), s.gaze_max_age) as u32,
         }))
     }
 }

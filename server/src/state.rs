@@ -76,7 +76,10 @@ impl Shared {
     }
 
     /// Replace the scene (called by the loop at the frame boundary where it swaps simulations).
+    /// The gaze processing measures degrees on the new scene's display from then on.
     pub fn set_scene(&self, scene: Arc<Scene>) {
+        self.fixation
+            .set_geometry(crate::fixation_cell::viewing_geometry(&scene.sim.display));
         *self.scene.write().unwrap_or_else(PoisonError::into_inner) = scene;
     }
 }

@@ -154,9 +154,8 @@ impl RecordedGaze {
             self.samples[i - 1]
         };
         Some(Fixation {
-            x: p[0],
-            y: p[1],
             age_s: (tl - ts).max(0.0),
+            ..Fixation::at(p[0], p[1])
         })
     }
 }

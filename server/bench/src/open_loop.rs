@@ -531,6 +531,7 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
                 viewer: input.viewer,
                 fixation_px: fix_px,
                 model: cond.measure_model,
+                uncertainty_deg: 0.0,
             };
             weights.clear();
             weights.extend(truths.iter().map(|t| t.weight(&view)));

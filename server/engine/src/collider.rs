@@ -162,12 +162,13 @@ impl Collider {
         };
         let prioritised = affordable && self.prioritises(fixation_px.is_some());
         r.ordering_shed = !affordable;
+        let uncertainty_deg = fixation.map_or(0.0, |f| f.clamped().uncertainty_deg);
         if prioritised {
             self.prioritiser.prioritise(
                 &self.narrow.pairs,
                 input.world,
                 input.viewer,
-                fixation_px,
+                fixation_px.map(|px| (px, uncertainty_deg)),
                 &mut self.priorities,
                 &mut meter,
             );
@@ -179,6 +180,7 @@ impl Collider {
             viewer: input.viewer,
             fixation_px: px,
             model: self.config.schedule_model,
+            uncertainty_deg,
         });
         let work = Work {
             tree: input.tree,
@@ -226,6 +228,8 @@ impl Collider {
             viewer: input.viewer,
             fixation_px: px,
             model: self.config.measure_model,
+            // P is measured about the fixation itself, however uncertain it was.
+            uncertainty_deg: 0.0,
         });
         let (tree, world) = (input.tree, input.world);
         let fovea = fixation_px.map(|px| Fovea::new(input.viewer, px, FOVEAL_DEG));

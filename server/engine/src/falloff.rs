@@ -21,6 +21,10 @@ use crate::perception::{EccentricityUnit, PerceptualFunction, PerceptualModel};
 /// Knots of every table: at 4,096 knots over the chord range a knot is 0.028 degrees apart, well
 /// below any tracker's accuracy (about 0.5 degrees), and the table is 16 KiB.
 const KNOTS: usize = 4096;
+/// Largest angle of the degrees unit's angle-indexed table (used only with an uncertain
+/// fixation): two eye rays are never further apart.
+const ANGLE_RANGE: f64 = 180.0;
+
 /// Largest pixel distance tabulated; beyond it the last value holds (F2 has decayed to nothing
 /// there for any C below 1,000 px).
 pub const PIXEL_RANGE: f32 = 16_384.0;
@@ -33,7 +37,11 @@ pub struct Falloff {
     factor: Vec<f32>,
     /// Eccentricity in the model's unit at each knot (degrees unit only; for F1 and gaps).
     angle: Vec<f32>,
+    /// Degrees unit: the fall-off over the angle itself, [0, 180] degrees, for an eccentricity
+    /// reduced by the fixation's uncertainty (which no longer maps to a chord).
+    factor_by_angle: Vec<f32>,
     inv_step: f32,
+    inv_angle_step: f32,
     reciprocal: bool,
 }
 
@@ -57,11 +65,20 @@ impl Falloff {
         let factor = (0..KNOTS)
             .map(|k| model.evaluate(1.0, ecc(k)) as f32)
             .collect();
+        let angle_step = ANGLE_RANGE / (KNOTS - 1) as f64;
+        let factor_by_angle = match unit {
+            EccentricityUnit::Degrees => (0..KNOTS)
+                .map(|k| model.evaluate(1.0, (k as f64 * angle_step).min(ANGLE_RANGE)) as f32)
+                .collect(),
+            EccentricityUnit::Pixels => Vec::new(),
+        };
         Self {
             unit,
             factor,
             angle,
+            factor_by_angle,
             inv_step: (1.0 / step) as f32,
+            inv_angle_step: (1.0 / angle_step) as f32,
             reciprocal: matches!(model.function, PerceptualFunction::F1),
         }
     }
@@ -73,10 +90,7 @@ impl Falloff {
 
     #[inline]
     fn lerp(&self, table: &[f32], x: f32) -> f32 {
-        let t = (x.max(0.0) * self.inv_step).min((KNOTS - 1) as f32);
-        let k = (t as usize).min(KNOTS - 2);
-        let f = t - k as f32;
-        table[k] + (table[k + 1] - table[k]) * f
+        lerp(table, x, self.inv_step)
     }
 
     /// Eccentricity in the model's unit for argument `x` (a chord in the degrees unit, pixels in the
@@ -99,6 +113,33 @@ impl Falloff {
             self.lerp(&self.factor, x)
         }
     }
+
+    /// The fall-off at argument `x` with the eccentricity reduced by `widen` (in the model's
+    /// unit: degrees or pixels), never below 0: the fixation is uncertain by that radius, and
+    /// everything inside it is scheduled as foveal. `widen` 0 is [`Self::factor`] up to the
+    /// tables' interpolation.
+    #[inline]
+    pub fn factor_widened(&self, x: f32, widen: f32) -> f32 {
+        let e = (self.eccentricity(x) - widen).max(0.0);
+        if self.reciprocal {
+            if e > 0.0 { 1.0 / e } else { 1.0 }
+        } else {
+            match self.unit {
+                EccentricityUnit::Degrees => lerp(&self.factor_by_angle, e, self.inv_angle_step),
+                EccentricityUnit::Pixels => self.lerp(&self.factor, e),
+            }
+        }
+    }
+}
+
+/// Linear interpolation in a table of [`KNOTS`] values spaced `1 / inv_step` apart from 0; the
+/// last value holds beyond the range.
+#[inline]
+fn lerp(table: &[f32], x: f32, inv_step: f32) -> f32 {
+    let t = (x.max(0.0) * inv_step).min((KNOTS - 1) as f32);
+    let k = (t as usize).min(KNOTS - 2);
+    let f = t - k as f32;
+    table[k] + (table[k + 1] - table[k]) * f
 }
 
 #[cfg(test)]
@@ -146,8 +187,61 @@ mod tests {
             assert!((f64::from(f.factor(e)) - want).abs() < 1e-3 * want.max(1e-3));
         }
         let f1 = Falloff::new(&PerceptualModel::f1_pixels());
+        assert_eq!(f1.factor_widened(4.0, 2.0), 0.5);
+        assert_eq!(f1.factor_widened(4.0, 9.0), 1.0);
         assert_eq!(f1.factor(0.0), 1.0);
         assert_eq!(f1.factor(4.0), 0.25);
         assert!(f1.factor(1e9).is_finite() && f1.factor(-3.0) == 1.0);
+    }
+
+    #[test]
+    fn an_uncertain_fixation_schedules_its_radius_as_foveal_and_beyond_it_shifted() {
+        for model in [
+            PerceptualModel::default(),
+            PerceptualModel {
+                function: PerceptualFunction::F2 { c: 1.0 },
+                unit: EccentricityUnit::Degrees,
+            },
+            PerceptualModel {
+                function: PerceptualFunction::F2 { c: 200.0 },
+                unit: EccentricityUnit::Pixels,
+            },
+        ] {
+            let f = Falloff::new(&model);
+            let arg = |e: f64| match model.unit {
+                EccentricityUnit::Degrees => chord(e),
+                EccentricityUnit::Pixels => e as f32,
+            };
+            let (widen, scale) = match model.unit {
+                EccentricityUnit::Degrees => (3.0, 1.0),
+                EccentricityUnit::Pixels => (120.0, 40.0),
+            };
+            // Inside the radius: foveal, the fall-off's value at 0.
+            let at0 = model.evaluate(1.0, 0.0);
+            for e in [0.0, 0.5 * widen, widen] {
+                let got = f64::from(f.factor_widened(arg(e), widen as f32));
+                assert!((got - at0).abs() < 2e-3, "{model:?} e {e}: {got} vs {at0}");
+            }
+            // Beyond it: the fall-off of the eccentricity less the radius.
+            for extra in [0.5, 2.0, 7.0] {
+                let e = widen + extra * scale;
+                let want = model.evaluate(1.0, extra * scale);
+                let got = f64::from(f.factor_widened(arg(e), widen as f32));
+                assert!(
+                    (got - want).abs() <= 3e-3 * want.max(1e-3),
+                    "{model:?} e {e}: {got} vs {want}"
+                );
+                // Never below the unwidened fall-off.
+                assert!(got >= f64::from(f.factor(arg(e))) - 1e-6);
+            }
+            // No uncertainty: the same as the plain lookup.
+            for e in [0.0, 1.0, 4.0, 20.0] {
+                let (a, b) = (f.factor_widened(arg(e), 0.0), f.factor(arg(e)));
+                assert!(
+                    (a - b).abs() <= 2e-3 * b.max(1e-3),
+                    "{model:?} e {e}: {a} vs {b}"
+                );
+            }
+        }
     }
 }

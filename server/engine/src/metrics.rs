@@ -269,6 +269,7 @@ mod tests {
             viewer: &viewer,
             fixation_px: viewer.to_pixels(0.5, 0.5),
             model: PerceptualModel::default(),
+            uncertainty_deg: 0.0,
         };
         let fovea = Fovea::new(&viewer, view.fixation_px, 5.0);
         let exact = measure(&np, &tree, &world, Some(&view), Some(&fovea), 1);

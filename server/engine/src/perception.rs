@@ -70,6 +70,13 @@ impl Display {
         self.diagonal_in * 2.54 / f64::from(self.width_px).hypot(f64::from(self.height_px))
     }
 
+    /// Pixels per degree of visual angle at the screen centre, where a degree spans the fewest
+    /// pixels of a flat screen: an angle expressed in the pixel unit this way is never larger than
+    /// it is anywhere on the screen.
+    pub fn pixels_per_degree(&self) -> f64 {
+        self.viewing_distance_cm * 1f64.to_radians().tan() / self.pixel_pitch_cm()
+    }
+
     /// Unit ray from the eye (in front of the screen centre) to a screen point given in pixels.
     /// The angle between two points is the angle between their rays; comparing the chord of two
     /// rays with 2 sin(threshold / 2) tests an angle against a threshold with no trigonometry.

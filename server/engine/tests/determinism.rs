@@ -11,9 +11,8 @@ fn gaze(frame: u64) -> Option<Fixation> {
         _ => {
             let k = (frame / 20) as f64;
             Some(Fixation {
-                x: 0.5 + 0.3 * (k * 1.3).sin(),
-                y: 0.5 + 0.3 * (k * 0.7).cos(),
                 age_s: 0.004,
+                ..Fixation::at(0.5 + 0.3 * (k * 1.3).sin(), 0.5 + 0.3 * (k * 0.7).cos())
             })
         }
     }

@@ -147,6 +147,7 @@ impl Priorities {
 pub struct Prioritiser {
     falloff: Falloff,
     needs: Needs,
+    threshold_deg: f64,
     threshold_chord: f64,
     pitch: f64,
     centre: [f64; 2],
@@ -172,6 +173,7 @@ impl Prioritiser {
         Self {
             falloff: Falloff::new(model),
             needs,
+            threshold_deg: threshold_deg.clamp(0.0, 180.0),
             threshold_chord: 2.0 * half.sin(),
             pitch: d.pixel_pitch_cm(),
             centre: [0.5 * f64::from(d.width_px), 0.5 * f64::from(d.height_px)],
@@ -212,16 +214,18 @@ impl Prioritiser {
         }
     }
 
-    /// Fill `out` for `pairs`. With a fixation (pixels), fall-offs (and, if needed, weights and
-    /// the first queue) follow it; without one every fall-off is 1 and no pair is in the first
-    /// queue. Checks a wall-clock deadline every 64 pairs and stops when it has passed: pairs not
+    /// Fill `out` for `pairs`. With a fixation (pixels, and its uncertainty in degrees), fall-offs
+    /// (and, if needed, weights and the first queue) follow it; without one every fall-off is 1
+    /// and no pair is in the first queue. An uncertain fixation schedules everything within its
+    /// radius as foveal: eccentricities are reduced by the radius, and the first queue's
+    /// threshold grows by it ([`crate::Fixation::uncertainty_deg`]). Checks a wall-clock deadline every 64 pairs and stops when it has passed: pairs not
     /// reached read as unprioritised, so a budget smaller than prioritisation is still held.
     pub fn prioritise(
         &self,
         pairs: &[PairState],
         world: &World,
         viewer: &Viewer,
-        fixation_px: Option<[f64; 2]>,
+        fixation: Option<([f64; 2], f64)>,
         out: &mut Priorities,
         meter: &mut Meter<'_>,
     ) {
@@ -241,7 +245,26 @@ impl Prioritiser {
         if out.inner.len() < n {
             out.inner.resize(n, false);
         }
-        let fix = fixation_px.map(|f| {
+        let uncertainty_deg = fixation.map_or(0.0, |(_, u)| u.clamp(0.0, 180.0));
+        // The radius in the fall-off's unit, and the first queue's threshold grown by it.
+        let widen = match self.falloff.unit() {
+            EccentricityUnit::Degrees => uncertainty_deg,
+            EccentricityUnit::Pixels => uncertainty_deg * viewer.display.pixels_per_degree(),
+        } as f32;
+        let threshold_chord = if uncertainty_deg > 0.0 {
+            let half = (0.5 * (self.threshold_deg + uncertainty_deg).min(180.0)).to_radians();
+            2.0 * half.sin()
+        } else {
+            self.threshold_chord
+        };
+        let factor = |x: f32| {
+            if widen > 0.0 {
+                self.falloff.factor_widened(x, widen)
+            } else {
+                self.falloff.factor(x)
+            }
+        };
+        let fix = fixation.map(|(f, _)| {
             let px = [f[0] as f32, f[1] as f32];
             let r = viewer.display.eye_ray(f);
             let view = BodyView {
@@ -257,7 +280,7 @@ impl Prioritiser {
         out.body_falloff.clear();
         match &fix {
             Some((f, _)) => {
-                let body_falloff = out.body.iter().map(|v| self.falloff.factor(self.arg(v, f)));
+                let body_falloff = out.body.iter().map(|v| factor(self.arg(v, f)));
                 out.body_falloff.extend(body_falloff);
             }
             None => out.body_falloff.resize(out.body.len(), 1.0),
@@ -318,14 +341,14 @@ impl Prioritiser {
                     (0.5 * (va.px[0] + vb.px[0]) - f.px[0])
                         .hypot(0.5 * (va.px[1] + vb.px[1]) - f.px[1])
                 };
-                let fo = self.falloff.factor(e_arg);
+                let fo = factor(e_arg);
                 falloff[k] = fo;
                 if self.needs.weight {
                     weight[k] = fo * self.falloff.eccentricity(self.arg(va, vb));
                 }
                 if self.needs.inner {
                     let c = viewer.project((pa + pb) * 0.5);
-                    inner[k] = chord64(viewer.display.eye_ray(c), *f_ray) <= self.threshold_chord;
+                    inner[k] = chord64(viewer.display.eye_ray(c), *f_ray) <= threshold_chord;
                 }
             } else {
                 falloff[k] = 1.0;

@@ -153,3 +153,57 @@ fn priced_lowers_true_perceived_error_at_the_shipped_and_a_self_calibrated_depth
         );
     }
 }
+
+#[test]
+fn an_uncertain_fixation_spends_the_budget_where_the_eye_may_be() {
+    // While a tracker has lost the eye, the server widens the region treated as foveal: pairs
+    // between 4 and 8 degrees from the held fixation, which an exact fixation leaves to last,
+    // are resolved more often when the fixation is uncertain by 8 degrees (same frame, same
+    // budget).
+    let held = Fixation::at(0.5, 0.5);
+    let deemed_in_ring = |kind, fixation: Fixation| {
+        let mut s = sim(kind, BudgetSpec::FractionOfExact(0.1), 2000);
+        s.step(Some(fixation), &FrozenClock);
+        let px = s.viewer().to_pixels(held.x, held.y);
+        let (mut deemed, mut all) = (0u32, 0u32);
+        for p in s.pairs() {
+            let c = (s.world().position[p.a as usize] + s.world().position[p.b as usize]) * 0.5;
+            let e = s
+                .viewer()
+                .display
+                .visual_angle_deg(s.viewer().project(c), px);
+            if (4.0..8.0).contains(&e) {
+                all += 1;
+                deemed += u32::from(p.status == PairStatus::Deemed);
+            }
+        }
+        assert!(all > 20, "{kind:?}: only {all} pairs in the ring");
+        f64::from(deemed) / f64::from(all)
+    };
+    for kind in [
+        SchedulerKind::Priced,
+        SchedulerKind::PriorityOnly,
+        SchedulerKind::ExpectedGain,
+    ] {
+        let exact = deemed_in_ring(kind, held);
+        let uncertain = deemed_in_ring(kind, held.with_uncertainty(8.0));
+        assert!(
+            uncertain < exact,
+            "{kind:?}: deemed share in the ring {uncertain:.3} uncertain vs {exact:.3} exact"
+        );
+    }
+}
+
+#[test]
+fn a_fixation_with_a_bad_uncertainty_is_refused_like_any_unusable_one() {
+    let mut s = sim(SchedulerKind::Priced, BudgetSpec::FractionOfExact(0.1), 200);
+    for u in [f64::NAN, -1.0, f64::INFINITY] {
+        let r = s
+            .step(
+                Some(Fixation::at(0.5, 0.5).with_uncertainty(u)),
+                &FrozenClock,
+            )
+            .clone();
+        assert!(r.fixation_rejected && r.fixation.is_none(), "{u}");
+    }
+}
