@@ -6,6 +6,8 @@
 //! (CI makes a venv). Without it these tests print why and pass; with FOVEAL_REQUIRE_PEERS=1 a
 //! missing interpreter is a failure.
 
+// The shared recordings (`common::gaze_data`) are not needed here.
+#[allow(dead_code)]
 mod common;
 
 use std::io::{BufRead, BufReader};
