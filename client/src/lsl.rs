@@ -112,9 +112,12 @@ fn query_id() -> String {
     format!("{}{}", now.tv_nsec, std::process::id())
 }
 
-/// Sends the resolve query every half second until a matching outlet answers or `timeout`
-/// passes; gives its stream info and the address it answered from.
-async fn resolve(options: &LslOptions) -> io::Result<(StreamInfo, IpAddr)> {
+/// Sends the resolve query every half second until a matching outlet answers or the resolve
+/// timeout passes; gives its stream info and the address to reach it at.
+///
+/// # Errors
+/// No outlet answered in time, a value cannot be put in a query, or the socket failed.
+pub async fn resolve(options: &LslOptions) -> io::Result<(StreamInfo, IpAddr)> {
     let query = lsl::query(&options.type_, options.name.as_deref()).map_err(invalid)?;
     let socket = UdpSocket::bind("0.0.0.0:0").await?;
     socket.set_broadcast(true)?;
@@ -156,12 +159,17 @@ async fn resolve(options: &LslOptions) -> io::Result<(StreamInfo, IpAddr)> {
     }
 }
 
-/// One round of clock probes to the outlet's time service; the best probe's correction, or
-/// `None` when no probe came back.
-async fn probe_clock(service: SocketAddr) -> io::Result<Option<f64>> {
+/// One round of clock probes to the outlet's time service (`v4service_port`): the best probe's
+/// correction, to add to the outlet's time stamps, or `None` when no probe came back.
+///
+/// # Errors
+/// The UDP socket cannot be opened or used.
+pub async fn probe_clock(service: SocketAddr) -> io::Result<Option<f64>> {
     let socket = UdpSocket::bind("0.0.0.0:0").await?;
     socket.connect(service).await?;
-    let wave = std::process::id().wrapping_mul(7919) ^ local_clock().to_bits() as u32;
+    // liblsl reads the wave id as a C `int`: larger ids would come back garbled.
+    let wave =
+        (std::process::id().wrapping_mul(7919) ^ local_clock().to_bits() as u32) & 0x3fff_ffff;
     let mut probes = Vec::new();
     let mut buf = [0u8; 512];
     for k in 0..PROBES {

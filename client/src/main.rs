@@ -481,7 +481,10 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     tracing_subscriber::fmt()
         .with_env_filter(
-            EnvFilter::try_from_default_env().unwrap_or_else(|_| EnvFilter::new("info")),
+            // zeromq logs each reconnection attempt as a warning; the Pupil bridge reports a
+            // Pupil that has gone itself.
+            EnvFilter::try_from_default_env()
+                .unwrap_or_else(|_| EnvFilter::new("info,zeromq=error")),
         )
         .with_writer(io::stderr)
         .init();

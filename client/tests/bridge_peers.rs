@@ -249,13 +249,22 @@ async fn lsl_run(
     args.extend_from_slice(peer_args);
     let _peer = start_peer(&python, "lsl_outlet.py", &args);
     let server = TestServer::start().await;
-    let source = lsl::lsl(LslOptions {
+    let options = LslOptions {
         name: Some(name.into()),
         channels,
         resolve_timeout: Duration::from_secs(10),
         resolve_addresses: vec!["127.0.0.1".parse().expect("address")],
         ..LslOptions::default()
-    });
+    };
+    // The outlet's time service answers, and on one machine its clock is the inlet's.
+    let (info, addr) = lsl::resolve(&options).await.expect("the outlet is found");
+    let service = std::net::SocketAddr::new(addr, info.v4service_port);
+    let correction = lsl::probe_clock(service)
+        .await
+        .expect("probe")
+        .expect("the outlet answers time probes");
+    assert!(correction.abs() < 1e-3, "correction {correction} s");
+    let source = lsl::lsl(options);
     let (report, seen) = bridge_into(&server, source).await;
     server.stop().await;
     let samples = seen

@@ -488,7 +488,8 @@ pub fn deduced_timestamp(previous: f64, nominal_srate: f64) -> f64 {
     }
 }
 
-/// The time-service request of probe `wave_id` sent at `t0` (inlet clock).
+/// The time-service request of probe `wave_id` sent at `t0` (inlet clock). liblsl reads the id
+/// as a C `int`, so it must be below 2^31.
 #[must_use]
 pub fn timedata_request(wave_id: u32, t0: f64) -> String {
     format!("LSL:timedata\r\n{wave_id} {t0:.9}\r\n")
