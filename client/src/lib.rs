@@ -17,6 +17,8 @@
 //!   `StreamGaze`, unary batched `PushGaze`) that returns one [`sender::SendSummary`].
 //! - [`source`]: sample sources as channels: recordings (CSV or ASC, detected), live CSV lines
 //!   from stdin, a Gazepoint tracker over TCP, scripts.
+//! - [`pupil`]: a Pupil Core tracker (Pupil Remote and its gaze topics over ZeroMQ) as a source.
+//! - [`lsl`]: a Lab Streaming Layer outlet as a source, over LSL's wire protocol in Rust.
 //! - [`bridge`]: [`bridge::forward`], the one loop from a source through the pacer into a sender
 //!   that keeps going past malformed input and counts what it saw.
 //! - [`fixations`]: `foveal fixations`, the online detector run over a recording, scored against a
@@ -38,7 +40,9 @@ pub mod fixations;
 pub use foveal_gaze as gaze;
 pub mod health;
 pub mod load;
+pub mod lsl;
 pub mod pacer;
+pub mod pupil;
 pub mod sender;
 pub mod source;
 pub mod watch;

@@ -13,12 +13,15 @@ use anyhow::{Context, Result, bail};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use foveal_client::ConnectOptions;
 use foveal_client::bridge::{self, BridgeReport, ForwardOptions, StopReason};
-use foveal_client::gaze::ScreenPx;
+use foveal_client::gaze::lsl::{ChannelMap, Units};
 use foveal_client::gaze::opengaze;
 use foveal_client::gaze::script::{GazeScript, ScriptedGaze};
+use foveal_client::gaze::{Eye, ScreenPx};
 use foveal_client::health;
 use foveal_client::load::{self, LoadOptions};
+use foveal_client::lsl::{self, LslOptions};
 use foveal_client::pacer::Pace;
+use foveal_client::pupil::{self, PupilOptions};
 use foveal_client::sender::{GazeSender, Transport};
 use foveal_client::source::{self, GazepointOptions, RecordingFormat, SourceItem};
 use foveal_client::watch::{self, WatchOptions};
@@ -355,6 +358,92 @@ enum TrackerCommand {
         #[arg(long, default_value_t = 5)]
         retries: u32,
     },
+    /// A Pupil Core tracker (Pupil Capture or Service) over its network API: asks Pupil Remote
+    /// for the SUB port and subscribes to gaze. `norm_pos` is in the world camera's image unless
+    /// --surface maps it onto a surface (e.g. one marked on the display); y is flipped to
+    /// foveal's top-left origin. Pupil's eye 0 is the right eye. Gaze below --min-confidence is
+    /// sent as a missing sample. The Pupil timestamp is the tracker time.
+    Pupil {
+        /// Pupil Remote host.
+        #[arg(long, default_value = "127.0.0.1")]
+        host: String,
+        /// Pupil Remote port.
+        #[arg(long, default_value_t = foveal_client::gaze::pupil::DEFAULT_REMOTE_PORT)]
+        port: u16,
+        /// Gaze topic prefix to subscribe to, e.g. gaze.3d.01. for binocular 3D gaze only.
+        #[arg(long, default_value = "gaze.")]
+        topic: String,
+        /// Subscribe to surfaces.NAME and send its gaze_on_surfaces (surface coordinates).
+        #[arg(long, value_name = "NAME")]
+        surface: Option<String>,
+        /// Only this eye's gaze (left = Pupil's eye 1, right = eye 0).
+        #[arg(long, value_enum, default_value = "any")]
+        eye: PupilEyeArg,
+        /// Confidence below which gaze is sent as missing (Pupil Labs recommend 0.6).
+        #[arg(long, default_value_t = foveal_client::gaze::pupil::DEFAULT_MIN_CONFIDENCE)]
+        min_confidence: f64,
+        /// Seconds allowed to connect, and for each answer of Pupil Remote (it is asked for its
+        /// clock every second, so a vanished Pupil ends the bridge within this).
+        #[arg(long, default_value_t = 3.0)]
+        connect_timeout: f64,
+    },
+    /// A Lab Streaming Layer outlet, found by type (and name) on this machine or the local
+    /// network, spoken to in LSL's own protocol (no liblsl needed). Time stamps get the outlet's
+    /// clock correction, so they are on this machine's LSL clock. A NaN channel value is sent as
+    /// a missing sample.
+    Lsl {
+        /// Stream type to resolve.
+        #[arg(long = "type", default_value = "Gaze")]
+        type_: String,
+        /// Stream name, when the type alone is ambiguous.
+        #[arg(long)]
+        name: Option<String>,
+        /// Index of the channel holding x.
+        #[arg(long, default_value_t = 0)]
+        x_channel: usize,
+        /// Index of the channel holding y.
+        #[arg(long, default_value_t = 1)]
+        y_channel: usize,
+        /// Units of x and y (origin top-left either way); pixels need --screen.
+        #[arg(long, value_enum, default_value = "normalised")]
+        units: UnitsArg,
+        #[command(flatten)]
+        screen: ScreenArg,
+        /// Seconds to look for the stream and to connect to it.
+        #[arg(long, default_value_t = 5.0)]
+        resolve_timeout: f64,
+        /// Keep the outlet's time stamps on its own clock.
+        #[arg(long)]
+        no_time_correction: bool,
+    },
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum PupilEyeArg {
+    /// Every gaze datum.
+    Any,
+    /// Eye 1 only.
+    Left,
+    /// Eye 0 only.
+    Right,
+    /// Gaze of both eyes mapped together only.
+    Binocular,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum UnitsArg {
+    /// 0..1 of the screen.
+    Normalised,
+    /// Screen pixels (give --screen).
+    Pixels,
+}
+
+/// Seconds from a flag, checked: finite and positive.
+fn seconds(flag: &str, value: f64) -> Result<Duration> {
+    if !(value.is_finite() && value > 0.0 && value <= 3600.0) {
+        bail!("{flag} must be a number of seconds in (0, 3600], not {value}");
+    }
+    Ok(Duration::from_secs_f64(value))
 }
 
 #[derive(Debug, Args)]
@@ -392,7 +481,10 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     tracing_subscriber::fmt()
         .with_env_filter(
-            EnvFilter::try_from_default_env().unwrap_or_else(|_| EnvFilter::new("info")),
+            // zeromq logs each reconnection attempt as a warning; the Pupil bridge reports a
+            // Pupil that has gone itself.
+            EnvFilter::try_from_default_env()
+                .unwrap_or_else(|_| EnvFilter::new("info,zeromq=error")),
         )
         .with_writer(io::stderr)
         .init();
@@ -598,6 +690,70 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
             };
             let name = format!("bridge:gazepoint:{host}:{port}");
             (name, source::gazepoint(options), Pace::AsFastAsPossible)
+        }
+        TrackerCommand::Pupil {
+            host,
+            port,
+            topic,
+            surface,
+            eye,
+            min_confidence,
+            connect_timeout,
+        } => {
+            let options = PupilOptions {
+                host: host.clone(),
+                port: *port,
+                topic: topic.clone(),
+                surface: surface.clone(),
+                eye: match eye {
+                    PupilEyeArg::Any => None,
+                    PupilEyeArg::Left => Some(Eye::Left),
+                    PupilEyeArg::Right => Some(Eye::Right),
+                    PupilEyeArg::Binocular => Some(Eye::Binocular),
+                },
+                min_confidence: *min_confidence,
+                connect_timeout: seconds("--connect-timeout", *connect_timeout)?,
+                ..PupilOptions::default()
+            };
+            options.check().map_err(anyhow::Error::msg)?;
+            let name = format!("bridge:pupil:{host}:{port}");
+            (name, pupil::pupil(options), Pace::AsFastAsPossible)
+        }
+        TrackerCommand::Lsl {
+            type_,
+            name,
+            x_channel,
+            y_channel,
+            units,
+            screen,
+            resolve_timeout,
+            no_time_correction,
+        } => {
+            let units = match (units, screen.screen) {
+                (UnitsArg::Normalised, None) => Units::Normalised,
+                (UnitsArg::Normalised, Some(_)) => {
+                    bail!("--screen is for --units pixels; normalised gaze needs no screen size")
+                }
+                (UnitsArg::Pixels, Some(screen)) => Units::Pixels(screen),
+                (UnitsArg::Pixels, None) => bail!("--units pixels needs --screen WIDTHxHEIGHT"),
+            };
+            let options = LslOptions {
+                type_: type_.clone(),
+                name: name.clone(),
+                channels: ChannelMap {
+                    x: *x_channel,
+                    y: *y_channel,
+                    units,
+                },
+                resolve_timeout: seconds("--resolve-timeout", *resolve_timeout)?,
+                time_correction: !no_time_correction,
+                ..LslOptions::default()
+            };
+            let label = format!(
+                "bridge:lsl:{type_}{}",
+                name.as_deref().map(|n| format!(":{n}")).unwrap_or_default()
+            );
+            (label, lsl::lsl(options), Pace::AsFastAsPossible)
         }
     };
     send(&args.server, &args.send, &name, source, pace).await

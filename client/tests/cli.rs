@@ -181,3 +181,65 @@ fn fixations_agree_with_the_tracker_parser_on_the_shared_recording() {
         text(&out.stderr)
     );
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn pupil_and_lsl_bridges_refuse_bad_flags_and_name_a_missing_peer() {
+    for (args, expected) in [
+        (
+            &["bridge", "pupil", "--min-confidence", "1.5"][..],
+            "--min-confidence must be in 0..=1",
+        ),
+        (
+            &["bridge", "pupil", "--connect-timeout", "0"][..],
+            "--connect-timeout must be a number of seconds",
+        ),
+        (
+            &["bridge", "lsl", "--units", "pixels"][..],
+            "--units pixels needs --screen",
+        ),
+        (
+            &["bridge", "lsl", "--screen", "1920x1080"][..],
+            "--screen is for --units pixels",
+        ),
+    ] {
+        let mut command = foveal();
+        command.args(args);
+        let out = run(command, "").await;
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        assert!(
+            text(&out.stderr).contains(expected),
+            "{args:?}: {}",
+            text(&out.stderr)
+        );
+    }
+
+    // Nobody listens on the port: the bridge gives up within its timeout, names the address,
+    // and exits 1.
+    let server = TestServer::start().await;
+    let port = std::net::TcpListener::bind("127.0.0.1:0")
+        .and_then(|l| l.local_addr())
+        .expect("a free port")
+        .port()
+        .to_string();
+    let mut command = foveal();
+    command.args([
+        "bridge",
+        "--addr",
+        &server.addr,
+        "pupil",
+        "--port",
+        &port,
+        "--connect-timeout",
+        "0.5",
+    ]);
+    let started = std::time::Instant::now();
+    let out = run(command, "").await;
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    assert!(started.elapsed() < std::time::Duration::from_secs(10));
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains(&format!("source failed: Pupil Remote at 127.0.0.1:{port}")),
+        "{stdout}"
+    );
+    server.stop().await;
+}

@@ -20,6 +20,9 @@
 //!   display coordinates).
 //! - [`opengaze`]: the Gazepoint Open Gaze API (XML lines over TCP): handshake commands and a
 //!   record parser.
+//! - [`pupil`]: Pupil Core gaze datums (network API): topics, eyes, confidence, the y flip.
+//! - [`lsl`]: the Lab Streaming Layer wire protocol (resolve, stream feed, samples, clock
+//!   probes) and the mapping of channels to gaze.
 //! - [`validate`]: the rules a sample must pass before it can steer the scheduler, including
 //!   the limit on timestamp jumps.
 //! - [`geometry`]: normalised screen points as gaze directions in degrees of visual angle.
@@ -43,8 +46,10 @@ pub mod detect;
 pub mod filter;
 pub mod fixation_list;
 pub mod geometry;
+pub mod lsl;
 pub mod online;
 pub mod opengaze;
+pub mod pupil;
 pub mod quantile;
 pub mod rng;
 pub mod script;
