@@ -84,7 +84,9 @@ impl FixationCell {
         }
     }
 
-    fn seconds(&self, at: Instant) -> f64 {
+    /// `at` on the processing's clock (seconds since the cell was made): what receipt times
+    /// are given to the processing as, and what a recorded session's times are on.
+    pub(crate) fn seconds(&self, at: Instant) -> f64 {
         at.saturating_duration_since(self.epoch).as_secs_f64()
     }
 

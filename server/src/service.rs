@@ -71,6 +71,23 @@ impl FovealService {
     }
 }
 
+impl FovealService {
+    /// Record samples about to be handed to the processing, at their receipt time on its clock.
+    fn record_gaze<'a>(
+        &self,
+        samples: impl IntoIterator<Item = &'a foveal_gaze::GazeSample>,
+        received: Instant,
+        source: Option<&str>,
+    ) {
+        if let (Some(rec), Some(source)) = (&self.shared.recorder, source) {
+            let received_s = self.shared.fixation.seconds(received);
+            for s in samples {
+                rec.gaze(s, received_s, source);
+            }
+        }
+    }
+}
+
 #[tonic::async_trait]
 impl pb::foveal_server::Foveal for FovealService {
     async fn stream_gaze(
@@ -92,6 +109,8 @@ impl pb::foveal_server::Foveal for FovealService {
         let mut limiter = RateLimiter::new(self.limits.max_gaze_rate_hz, Instant::now());
         let mut rate_limited = 0u64;
         let mut shutdown = self.shutdown.clone();
+        let recorder = self.shared.recorder.as_deref();
+        let source = recorder.map(crate::recorder::Recorder::stream_source);
         loop {
             let next = tokio::select! {
                 _ = shutdown.wait() => break,
@@ -110,6 +129,7 @@ impl pb::foveal_server::Foveal for FovealService {
                     match validator.check(&sample) {
                         Ok(_) => {
                             let s = gaze::from_pb(&sample);
+                            self.record_gaze([&s], now, source.as_deref());
                             self.shared.fixation.push([&s], now);
                             self.shared.metrics.gaze(1, 0);
                         }
@@ -117,6 +137,7 @@ impl pb::foveal_server::Foveal for FovealService {
                             if r.kind == RejectKind::Missing {
                                 // A blink or track loss: not gaze, but the processing must know.
                                 let s = gaze::from_pb(&sample);
+                                self.record_gaze([&s], now, source.as_deref());
                                 self.shared.fixation.push([&s], now);
                             }
                             self.shared.metrics.gaze(0, 1);
@@ -182,6 +203,10 @@ impl pb::foveal_server::Foveal for FovealService {
             .map(gaze::from_pb)
             .collect();
         if !usable.is_empty() {
+            if self.shared.recorder.is_some() {
+                let source = format!("push:{}", req.source);
+                self.record_gaze(&usable, received, Some(&source));
+            }
             self.shared.fixation.push(&usable, received);
         }
         self.shared
