@@ -11,7 +11,7 @@
 //! trailer and flush, and logs what was kept.
 
 use std::fs::File;
-use std::io::BufWriter;
+use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::mpsc::{self, SyncSender, TrySendError};
@@ -49,6 +49,8 @@ pub struct Recorder {
     warned: AtomicBool,
     next_stream: AtomicU64,
     thread: Mutex<Option<JoinHandle<Result<Trailer, SessionError>>>>,
+    /// The trailer, once finished.
+    trailer: Mutex<Option<Trailer>>,
 }
 
 impl std::fmt::Debug for Msg {
@@ -81,13 +83,25 @@ impl Recorder {
             source,
         };
         let file = File::create(path).map_err(|e| fail(SessionError::Io(e)))?;
-        let writer = SessionWriter::new(BufWriter::new(file), header).map_err(fail)?;
-        let (tx, rx) = mpsc::sync_channel(CHANNEL_RECORDS);
+        let recorder =
+            Self::over(BufWriter::new(file), path, header, CHANNEL_RECORDS).map_err(fail)?;
+        tracing::info!(path = %path.display(), "recording the session");
+        Ok(recorder)
+    }
+
+    /// Write the header to `out`, then records from a writer thread fed by a channel of
+    /// `capacity` records; `path` names it in the log.
+    fn over(
+        out: impl Write + Send + 'static,
+        path: &Path,
+        header: &Header,
+        capacity: usize,
+    ) -> Result<Self, SessionError> {
+        let writer = SessionWriter::new(out, header)?;
+        let (tx, rx) = mpsc::sync_channel(capacity);
         let thread = std::thread::Builder::new()
             .name("foveal-recorder".into())
-            .spawn(move || write_all(writer, &rx))
-            .map_err(|e| fail(SessionError::Io(e)))?;
-        tracing::info!(path = %path.display(), "recording the session");
+            .spawn(move || write_all(writer, &rx))?;
         Ok(Self {
             path: path.to_owned(),
             tx,
@@ -95,6 +109,7 @@ impl Recorder {
             warned: AtomicBool::new(false),
             next_stream: AtomicU64::new(1),
             thread: Mutex::new(Some(thread)),
+            trailer: Mutex::new(None),
         })
     }
 
@@ -162,38 +177,59 @@ impl Recorder {
     /// Write the trailer, flush and close the file (waiting for the writer to drain), and log
     /// what was kept. Later calls, and records sent after, do nothing.
     pub fn finish(&self) {
-        let Some(thread) = self
+        if let Some(t) = self.finish_inner() {
+            *self.trailer.lock().unwrap_or_else(PoisonError::into_inner) = Some(t);
+        }
+    }
+
+    /// The trailer written by [`Self::finish`] (None before it, or if writing failed).
+    #[cfg(test)]
+    fn trailer(&self) -> Option<Trailer> {
+        *self.trailer.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+
+    fn finish_inner(&self) -> Option<Trailer> {
+        let thread = self
             .thread
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
-            .take()
-        else {
-            return;
-        };
+            .take()?;
         let dropped = self.dropped.load(Ordering::Relaxed);
         // Blocking on purpose: the frame loop has stopped, and the file must be complete.
         // Err: the writer thread is gone; joining says why.
         let _ = self.tx.send(Msg::Finish(dropped));
         let path = self.path.display();
         match thread.join() {
-            Ok(Ok(t)) if t.dropped > 0 => tracing::warn!(
-                %path,
-                frames = t.frames,
-                gaze_samples = t.gaze_samples,
-                scenes = t.scenes,
-                dropped = t.dropped,
-                "session recorded with records dropped (the writer fell behind)"
-            ),
-            Ok(Ok(t)) => tracing::info!(
-                %path,
-                frames = t.frames,
-                gaze_samples = t.gaze_samples,
-                scenes = t.scenes,
-                dropped = 0,
-                "session recorded"
-            ),
-            Ok(Err(e)) => tracing::error!(%path, error = %e, "recording the session failed"),
-            Err(_) => tracing::error!(%path, "the session writer thread panicked"),
+            Ok(Ok(t)) => {
+                if t.dropped > 0 {
+                    tracing::warn!(
+                        %path,
+                        frames = t.frames,
+                        gaze_samples = t.gaze_samples,
+                        scenes = t.scenes,
+                        dropped = t.dropped,
+                        "session recorded with records dropped (the writer fell behind)"
+                    );
+                } else {
+                    tracing::info!(
+                        %path,
+                        frames = t.frames,
+                        gaze_samples = t.gaze_samples,
+                        scenes = t.scenes,
+                        dropped = 0,
+                        "session recorded"
+                    );
+                }
+                Some(t)
+            }
+            Ok(Err(e)) => {
+                tracing::error!(%path, error = %e, "recording the session failed");
+                None
+            }
+            Err(_) => {
+                tracing::error!(%path, "the session writer thread panicked");
+                None
+            }
         }
     }
 }
@@ -206,8 +242,8 @@ impl Drop for Recorder {
 
 /// The writer thread: write records until told to finish. After a write error the rest is
 /// drained unwritten (senders never block either way) and the error is returned at the end.
-fn write_all(
-    mut writer: SessionWriter<BufWriter<File>>,
+fn write_all<W: Write>(
+    mut writer: SessionWriter<W>,
     rx: &mpsc::Receiver<Msg>,
 ) -> Result<Trailer, SessionError> {
     let mut failed: Option<SessionError> = None;
@@ -253,5 +289,105 @@ fn source_name(s: FixationSource) -> &'static str {
         FixationSource::FallbackNoGaze => "fallback_no_gaze",
         FixationSource::FallbackStale => "fallback_stale",
         FixationSource::FallbackTrackLost => "fallback_track_lost",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Arc;
+    use std::sync::mpsc::{Receiver, Sender};
+
+    use foveal_engine::Fixation;
+    use foveal_gaze::online::Track;
+
+    use super::*;
+
+    /// A shared byte sink whose writes wait, once `hold` is set, until `release` says go; it
+    /// tells `entered` when a write starts waiting. A disk that has stalled, on demand.
+    #[derive(Clone)]
+    struct Stall {
+        bytes: Arc<Mutex<Vec<u8>>>,
+        hold: Arc<AtomicBool>,
+        entered: Sender<()>,
+        release: Arc<Mutex<Receiver<()>>>,
+    }
+
+    impl Write for Stall {
+        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+            if self.hold.swap(false, Ordering::SeqCst) {
+                let _ = self.entered.send(());
+                let _ = self
+                    .release
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .recv();
+            }
+            self.bytes
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner)
+                .extend_from_slice(buf);
+            Ok(buf.len())
+        }
+
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    fn resolved() -> ResolvedFixation {
+        ResolvedFixation {
+            fixation: Fixation::at(0.25, 0.75),
+            source: FixationSource::Gaze,
+            raw: None,
+            track: Track::Raw,
+            widen_deg: 0.0,
+        }
+    }
+
+    #[test]
+    fn a_stalled_writer_drops_and_counts_records_instead_of_blocking() {
+        let (entered_tx, entered) = mpsc::channel();
+        let (release, release_rx) = mpsc::channel();
+        let sink = Stall {
+            bytes: Arc::default(),
+            hold: Arc::default(),
+            entered: entered_tx,
+            release: Arc::new(Mutex::new(release_rx)),
+        };
+        let header = header(&ServerConfig::default());
+        let capacity = 8;
+        let rec = Recorder::over(sink.clone(), Path::new("test"), &header, capacity)
+            .expect("header written");
+        // The first frame reaches the writer, whose disk then stalls.
+        sink.hold.store(true, Ordering::SeqCst);
+        let report = FrameReport::default();
+        rec.frame(0, 0.0, &resolved(), &report);
+        entered
+            .recv_timeout(std::time::Duration::from_secs(10))
+            .expect("the writer took the first record");
+        // The channel fills, then every further record is dropped at once, not waited for.
+        let started = std::time::Instant::now();
+        for i in 1..=(capacity as u64 + 5) {
+            rec.frame(i, 0.0, &resolved(), &report);
+        }
+        assert!(started.elapsed() < std::time::Duration::from_secs(1));
+        assert_eq!(rec.dropped.load(Ordering::Relaxed), 5);
+        release.send(()).expect("writer waiting");
+        rec.finish();
+        let t = rec.trailer().expect("finished");
+        assert_eq!((t.frames, t.dropped), (1 + capacity as u64, 5));
+        // And the file says so.
+        let bytes = sink
+            .bytes
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clone();
+        let s = foveal_session::Session::read(bytes.as_slice()).expect("a complete session");
+        assert_eq!(s.trailer.dropped, 5);
+        assert_eq!(s.frames.len(), 1 + capacity);
+        // Records after the end are not kept, and finishing twice is harmless.
+        rec.frame(99, 0.0, &resolved(), &report);
+        rec.finish();
+        assert_eq!(rec.trailer(), Some(t));
     }
 }

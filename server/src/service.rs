@@ -69,9 +69,7 @@ impl FovealService {
             gaze_streams: Arc::new(AtomicU32::new(0)),
         }
     }
-}
 
-impl FovealService {
     /// Record samples about to be handed to the processing, at their receipt time on its clock.
     fn record_gaze<'a>(
         &self,
