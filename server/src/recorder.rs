@@ -167,11 +167,11 @@ impl Recorder {
 
     /// A scene swap effective from `first_frame`.
     pub fn scene(&self, first_frame: u64, frame_rate_hz: f64, sim: &SimConfig) {
-        self.send(Record::Scene(SceneRecord {
+        self.send(Record::Scene(Box::new(SceneRecord {
             first_frame,
             frame_rate_hz,
             sim: sim.clone(),
-        }));
+        })));
     }
 
     /// Write the trailer, flush and close the file (waiting for the writer to drain), and log

@@ -320,11 +320,11 @@ mod tests {
         let mut index = 0;
         for (config, frames) in [(&a, 30), (&b, 20)] {
             if index > 0 {
-                w.write(&Record::Scene(foveal_session::SceneRecord {
+                w.write(&Record::Scene(Box::new(foveal_session::SceneRecord {
                     first_frame: index,
                     frame_rate_hz: 60.0,
                     sim: config.clone(),
-                }))
+                })))
                 .expect("scene");
             }
             let mut sim = Simulation::new(config.clone()).expect("valid");

@@ -63,7 +63,7 @@ pub enum Record {
     /// A completed frame.
     Frame(Box<FrameRecord>),
     /// A Configure swap, effective from `first_frame`.
-    Scene(SceneRecord),
+    Scene(Box<SceneRecord>),
     /// The last line.
     End(Trailer),
 }

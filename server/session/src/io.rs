@@ -180,7 +180,7 @@ impl Session {
                             ),
                         ));
                     }
-                    session.scenes.push(s);
+                    session.scenes.push(*s);
                 }
                 Record::End(t) => trailer = Some((n, t)),
             }

@@ -76,8 +76,7 @@ pub fn replay(session: &Session) -> Result<ReplayOutcome, ConfigError> {
     let mut config = session.header.sim.clone();
     let mut sim = Simulation::new(config.clone())?;
     let mut scenes = session.scenes.iter().peekable();
-    let mut expected = 0u64;
-    for frame in &session.frames {
+    for (expected, frame) in (0u64..).zip(&session.frames) {
         // Swaps take effect at their frame boundary; of several at one boundary the last stands.
         let mut swap = None;
         while let Some(scene) = scenes.next_if(|s| s.first_frame <= frame.index) {
@@ -91,7 +90,6 @@ pub fn replay(session: &Session) -> Result<ReplayOutcome, ConfigError> {
             outcome.gap_at = Some(expected);
             break;
         }
-        expected += 1;
         let replayed = sim.step(Some(frame.fixation), &FrozenClock);
         let exact = is_deterministic(&config);
         outcome.frames += 1;
