@@ -153,6 +153,11 @@ pub struct Cli {
     /// samples above it are dropped and counted (`rate_limited`).
     #[arg(long, env = "FOVEAL_MAX_GAZE_RATE", default_value_t = limits::DEFAULT_MAX_GAZE_RATE_HZ)]
     pub max_gaze_rate: f64,
+    /// Record the session to this file (JSON lines, docs/PROTOCOL.md "Recorded sessions"): the
+    /// configuration, every gaze sample with its receipt time, every frame's fixation and
+    /// metrics, scene changes. Replay it with `foveal-bench replay FILE`.
+    #[arg(long, env = "FOVEAL_RECORD")]
+    pub record: Option<PathBuf>,
     /// Log filter (`info`, `debug`, `foveal_server=debug,info`, ...).
     #[arg(long, env = "FOVEAL_LOG", default_value = "info")]
     pub log_level: String,
@@ -304,6 +309,7 @@ impl Cli {
                 max_memory_mib: self.max_memory_mib,
                 max_gaze_rate_hz: self.max_gaze_rate,
             },
+            record: self.record.clone(),
             ..ServerConfig::default()
         };
         config.validate()?;

@@ -43,6 +43,9 @@ pub struct ServerConfig {
     pub security: Security,
     /// Limits protecting the loop (scene cost, gaze rate).
     pub limits: Limits,
+    /// Write the session (configuration, every gaze sample the processing received, every
+    /// frame's fixation and report, scene changes) to this file (`foveal-session` format).
+    pub record: Option<std::path::PathBuf>,
     /// Health turns NOT_SERVING when no frame has completed for this many frame periods, and back
     /// to SERVING when frames flow again.
     pub stall_periods: u32,
@@ -93,6 +96,7 @@ impl Default for ServerConfig {
             security: Security::default(),
             limits: Limits::default(),
             stall_periods: DEFAULT_STALL_PERIODS,
+            record: None,
         }
     }
 }

@@ -52,6 +52,15 @@ pub enum ServerError {
         /// What is wrong with it.
         reason: String,
     },
+    /// `--record FILE` could not be created or could not take the session header.
+    #[error("--record {path}: cannot record the session there: {source}")]
+    Record {
+        /// The path.
+        path: String,
+        /// What failed.
+        #[source]
+        source: foveal_session::SessionError,
+    },
     /// Building the initial simulation was cancelled or panicked.
     #[error("building the initial simulation: {0}")]
     Build(#[from] tokio::task::JoinError),

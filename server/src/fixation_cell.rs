@@ -56,6 +56,18 @@ pub enum SourceKey {
     Push(Option<std::net::IpAddr>, String),
 }
 
+impl std::fmt::Display for SourceKey {
+    /// `stream:<n>`, or `push:<source>` with `@<ip>` when the peer is known (the names a recorded
+    /// session gives its gaze samples).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Stream(n) => write!(f, "stream:{n}"),
+            Self::Push(None, source) => write!(f, "push:{source}"),
+            Self::Push(Some(ip), source) => write!(f, "push:{source}@{ip}"),
+        }
+    }
+}
+
 #[derive(Debug)]
 struct Source {
     key: SourceKey,
@@ -187,7 +199,9 @@ impl FixationCell {
         }
     }
 
-    fn seconds(&self, at: Instant) -> f64 {
+    /// `at` on the processing's clock (seconds since the cell was made): what receipt times
+    /// are given to the processing as, and what a recorded session's times are on.
+    pub(crate) fn seconds(&self, at: Instant) -> f64 {
         at.saturating_duration_since(self.epoch).as_secs_f64()
     }
 

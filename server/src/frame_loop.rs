@@ -123,6 +123,9 @@ fn handle(
                 frame_rate_hz = scene.frame_rate_hz,
                 "scene swapped"
             );
+            if let Some(rec) = &shared.recorder {
+                rec.scene(*offset, scene.frame_rate_hz, &scene.sim);
+            }
             shared.set_scene(scene);
             // Err: the caller gave up waiting; the swap stands regardless.
             let _ = reply.send(*offset);
@@ -174,6 +177,10 @@ fn run(
         let used = convert::fixation_used(report, &resolved);
         let frame = convert::frame_to_pb(report, offset + report.index, &used);
         summary.record(report, step);
+        if let Some(rec) = &shared.recorder {
+            let t_s = shared.fixation.seconds(start);
+            rec.frame(offset + report.index, t_s, &resolved, report);
+        }
         let poses = shared
             .fanout
             .wants_poses()

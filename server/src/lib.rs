@@ -13,6 +13,7 @@
 //!   and connection limits; `watchdog`: health follows whether frames complete.
 //! - [`frame_loop`]: the frame loop's OS thread: fixed-rate pacing, overrun counting, scene swaps
 //!   at frame boundaries; [`clock`]: the monotonic clock the engine's wall-clock budget runs on.
+//! - `recorder`: `--record FILE`, the session written by its own thread, never blocking a frame.
 //! - [`fixation_cell`]: the latest-gaze cell the loop reads once per frame, with the fallback rule.
 //! - [`gaze`]: gaze-sample validation shared by StreamGaze and PushGaze.
 //! - [`fanout`]: the non-blocking frame broadcast and each WatchFrames subscriber's stream.
@@ -50,6 +51,7 @@ mod gate;
 mod gaze;
 mod limits;
 mod metrics;
+mod recorder;
 mod service;
 mod shutdown;
 mod state;
@@ -104,6 +106,14 @@ pub async fn run(
     config.validate()?;
     let local = listener.local_addr().ok();
     check_exposure(local, &config.security)?;
+    // Before the (possibly long) build: a file that cannot be written refuses start-up at once.
+    let recorder = match &config.record {
+        Some(path) => Some(Arc::new(recorder::Recorder::start(
+            path,
+            &recorder::header(&config),
+        )?)),
+        None => None,
+    };
     let rate = config.frame_rate_hz;
     let sim_config = config.sim.clone();
     // Scene generation and budget calibration can take seconds at large N: not on a worker.
@@ -116,7 +126,8 @@ pub async fn run(
     .await??;
     let shared = Arc::new(
         Shared::new(scene, config.gaze_max_age, config.frame_buffer)
-            .with_gaze_processing(config.gaze_processing),
+            .with_gaze_processing(config.gaze_processing)
+            .with_recorder(recorder.clone()),
     );
     let frame_loop = FrameLoop::spawn(sim, Arc::clone(&shared), config.summary_interval)?;
     let (trigger, stop) = shutdown::channel();
@@ -232,7 +243,15 @@ pub async fn run(
     drop(server);
     trigger.trigger();
     watchdog.abort();
-    let joined = tokio::task::spawn_blocking(move || frame_loop.stop_and_join()).await?;
+    let joined = tokio::task::spawn_blocking(move || {
+        let joined = frame_loop.stop_and_join();
+        // After the last frame: the trailer closes the session (Ctrl-C and SIGTERM end here too).
+        if let Some(rec) = &recorder {
+            rec.finish();
+        }
+        joined
+    })
+    .await?;
     tracing::info!("stopped");
     served?;
     joined

@@ -73,6 +73,22 @@ impl FovealService {
             next_stream: AtomicU64::new(0),
         }
     }
+
+    /// Record samples about to be handed to the processing, at their receipt time on its clock.
+    fn record_gaze<'a>(
+        &self,
+        samples: impl IntoIterator<Item = &'a foveal_gaze::GazeSample>,
+        received: Instant,
+        source: &SourceKey,
+    ) {
+        if let Some(rec) = &self.shared.recorder {
+            let received_s = self.shared.fixation.seconds(received);
+            let source = source.to_string();
+            for s in samples {
+                rec.gaze(s, received_s, &source);
+            }
+        }
+    }
 }
 
 #[tonic::async_trait]
@@ -115,6 +131,7 @@ impl pb::foveal_server::Foveal for FovealService {
                     match validator.check(&sample) {
                         Ok(_) => {
                             let s = gaze::from_pb(&sample);
+                            self.record_gaze([&s], now, &key);
                             self.shared.fixation.push(&key, [&s], now);
                             self.shared.metrics.gaze(1, 0);
                         }
@@ -122,6 +139,7 @@ impl pb::foveal_server::Foveal for FovealService {
                             if r.kind == RejectKind::Missing {
                                 // A blink or track loss: not gaze, but the processing must know.
                                 let s = gaze::from_pb(&sample);
+                                self.record_gaze([&s], now, &key);
                                 self.shared.fixation.push(&key, [&s], now);
                             }
                             self.shared.metrics.gaze(0, 1);
@@ -188,6 +206,7 @@ impl pb::foveal_server::Foveal for FovealService {
             .collect();
         if !usable.is_empty() {
             let key = SourceKey::Push(peer.map(|p| p.ip()), req.source.clone());
+            self.record_gaze(&usable, received, &key);
             self.shared.fixation.push(&key, &usable, received);
         }
         self.shared

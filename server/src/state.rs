@@ -10,6 +10,7 @@ use crate::convert;
 use crate::fanout::Fanout;
 use crate::fixation_cell::FixationCell;
 use crate::metrics::Metrics;
+use crate::recorder::Recorder;
 
 /// The scene in force: its configuration and everything GetScene reports. Replaced as a whole
 /// when the loop swaps simulations, so readers always see one consistent scene.
@@ -47,6 +48,8 @@ pub struct Shared {
     pub metrics: Metrics,
     /// Frames out.
     pub fanout: Arc<Fanout>,
+    /// The session recording (`--record`), if any.
+    pub recorder: Option<Arc<Recorder>>,
     scene: RwLock<Arc<Scene>>,
 }
 
@@ -59,6 +62,7 @@ impl Shared {
             fixation: FixationCell::new(),
             metrics: Metrics::default(),
             fanout: Arc::new(Fanout::new(frame_buffer)),
+            recorder: None,
             scene: RwLock::new(Arc::new(scene)),
         }
     }
@@ -67,6 +71,13 @@ impl Shared {
     #[must_use]
     pub fn with_gaze_processing(mut self, config: foveal_gaze::online::ProcessorConfig) -> Self {
         self.fixation = FixationCell::with_config(config);
+        self
+    }
+
+    /// The same state recording the session through `recorder`.
+    #[must_use]
+    pub fn with_recorder(mut self, recorder: Option<Arc<Recorder>>) -> Self {
+        self.recorder = recorder;
         self
     }
 

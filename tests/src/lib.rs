@@ -14,6 +14,7 @@
 //! - `tests/robustness.rs`: vanishing clients, many subscribers, shutdown.
 //! - `tests/services.rs`: health, reflection, GetScene.
 //! - `tests/viewer.rs`: quantised poses, collision lists, the page and grpc-web on the gRPC port.
+//! - `tests/record_replay.rs`: a session recorded with `--record` replays bit for bit.
 //! - `tests/security.rs`: roles, TLS, loopback-only without tokens; `tests/limits.rs`: scene
 //!   cost, oversize messages, gaze rate limit, honest health, shutdown with stalled subscribers.
 

@@ -16,6 +16,14 @@ pub enum BenchError {
     /// The gaze trace could not be used.
     #[error(transparent)]
     Gaze(#[from] GazeError),
+    /// A recorded session could not be read.
+    #[error("session {path}: {source}")]
+    Session {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it (the line, for a damaged file).
+        source: foveal_session::SessionError,
+    },
     /// A file could not be written.
     #[error("{path}: {source}")]
     Io {

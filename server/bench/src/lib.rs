@@ -10,6 +10,8 @@
 //! - [`protocol`]: the study's runs ([`StudyConfig`], [`Mode`], [`RunSpec`]); the paper's N and
 //!   target times.
 //! - [`open_loop`]: schedulers compared on identical frames against the clairvoyant bound.
+//! - [`session`]: a recorded server session replayed bit for bit, then open loop under every
+//!   scheduler.
 //! - [`calibrate`]: regenerates the priced scheduler's table and reports its reliability.
 //! - [`gaze`]: the seeded fixation/saccade script and the recorded-trace reader.
 //! - [`runner`]: the `Instant` clock, one run, the plan, per-frame CSV records.
@@ -40,6 +42,7 @@ pub mod protocol;
 pub mod report;
 pub mod runner;
 pub mod scale;
+pub mod session;
 pub mod stats;
 pub mod stress;
 

@@ -34,6 +34,11 @@ enum Command {
     /// Compare schedulers open loop: every scheduler and budget on the identical frames of one
     /// exact run, against the clairvoyant bound, with the gaze-blind control and model mismatch.
     OpenLoop(OpenLoopArgs),
+    /// Replay a session recorded by `foveal-server --record FILE`: closed loop, checking every
+    /// frame's metrics against the recording bit for bit (sphere-test budgets), then open loop
+    /// with the recorded gaze driving every scheduler on identical frames. Exits non-zero if
+    /// the replay differs.
+    Replay(ReplayArgs),
     /// Regenerate the priced scheduler's calibration table from exact runs and report its
     /// reliability on held-out seeds.
     Calibrate(CalibrateArgs),
@@ -103,6 +108,67 @@ fn open_loop(args: &OpenLoopArgs) -> Result<()> {
         eprintln!("{}", f.display());
     }
     print!("{}", out.report);
+    Ok(())
+}
+
+#[derive(Debug, Args)]
+struct ReplayArgs {
+    /// The session file.
+    file: PathBuf,
+    #[command(flatten)]
+    options: SessionOptions,
+}
+
+/// How a recorded session is re-run (`replay FILE`, `study --session FILE`).
+#[derive(Debug, Args)]
+struct SessionOptions {
+    /// Fractions of each frame's exact cost the open loop runs at, beside the session's budget.
+    #[arg(
+        long = "session-fractions",
+        value_delimiter = ',',
+        default_value = "0.01,0.03,0.1,0.3"
+    )]
+    session_fractions: Vec<f64>,
+    /// Only the closed-loop replay.
+    #[arg(long)]
+    replay_only: bool,
+    /// Write the report (markdown) here as well as to stdout.
+    #[arg(long = "session-report")]
+    session_report: Option<PathBuf>,
+}
+
+fn replay(file: &std::path::Path, options: &SessionOptions) -> Result<()> {
+    use foveal_bench::session;
+    let f = std::fs::File::open(file).with_context(|| format!("opening {}", file.display()))?;
+    let s = foveal_session::Session::read(std::io::BufReader::new(f)).map_err(|source| {
+        foveal_bench::BenchError::Session {
+            path: file.to_owned(),
+            source,
+        }
+    })?;
+    if let Some(bad) = options
+        .session_fractions
+        .iter()
+        .find(|f| !(f.is_finite() && (0.0..=1.0).contains(*f)))
+    {
+        bail!("--session-fractions: {bad} is not a fraction in [0, 1]");
+    }
+    let cfg = session::SessionConfig {
+        fractions: options.session_fractions.clone(),
+        open_loop: !options.replay_only,
+    };
+    let out = session::run(&s, &cfg).context("replaying the session failed")?;
+    print!("{}", out.markdown);
+    if let Some(path) = &options.session_report {
+        std::fs::write(path, &out.markdown)
+            .with_context(|| format!("writing {}", path.display()))?;
+    }
+    if let Some(m) = &out.replay.mismatch {
+        bail!(
+            "{}: the replay differs from the recording: {m}",
+            file.display()
+        );
+    }
     Ok(())
 }
 
@@ -227,6 +293,12 @@ struct StudyArgs {
     /// Skip the open-loop comparison of schedulers (identical frames, clairvoyant bound).
     #[arg(long)]
     no_open_loop: bool,
+    /// Instead of the study, re-run this recorded session (`foveal-server --record FILE`):
+    /// closed loop bit for bit, then open loop under every scheduler (as `replay FILE`).
+    #[arg(long)]
+    session: Option<PathBuf>,
+    #[command(flatten)]
+    session_options: SessionOptions,
 }
 
 impl StudyArgs {
@@ -314,6 +386,9 @@ impl StudyArgs {
 }
 
 fn study(args: &StudyArgs) -> Result<()> {
+    if let Some(file) = &args.session {
+        return replay(file, &args.session_options);
+    }
     let cfg = args.config()?;
     let plan = cfg.plan();
     eprintln!(
@@ -416,5 +491,6 @@ fn main() -> Result<()> {
         Command::Scale(args) => scale(args),
         Command::OpenLoop(args) => open_loop(args),
         Command::Calibrate(args) => calibrate(args),
+        Command::Replay(args) => replay(&args.file, &args.options),
     }
 }

@@ -139,15 +139,18 @@ pub struct Condition {
 pub enum Budget {
     /// Sphere tests: this fraction of the frame's exact cost.
     Tests(f64),
+    /// Sphere tests: this many every frame (a recorded session's own budget).
+    FixedTests(u64),
     /// Wall clock: this fraction of the scene's median exact narrow-phase time.
     Wall(f64),
 }
 
 impl Budget {
-    /// `tests=0.1` or `wall=0.333`.
+    /// `tests=0.1`, `8000tests` or `wall=0.333`.
     pub fn label(&self) -> String {
         match self {
             Self::Tests(f) => format!("tests={f}"),
+            Self::FixedTests(n) => format!("{n}tests"),
             Self::Wall(f) => format!("wall={f:.3}"),
         }
     }
@@ -438,24 +441,48 @@ fn sim_config(n: u32, seed: u64) -> SimConfig {
     }
 }
 
-/// Run one (N, seed).
+/// Run one (N, seed) of the paper scene, the scripted viewer looking.
 pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, BenchError> {
-    let mut source = Simulation::new(sim_config(n, seed))?;
     let mut gaze = ScriptedGaze::new(seed);
+    run_frames(cfg, &sim_config(n, seed), seed, &mut |t| gaze.at(t))
+}
+
+/// Run the comparison on the frames of one exact run of `scene` (its budget, scheduler and
+/// audit are replaced: the frames come from the exact run), with the viewer's fixation at
+/// simulated time `t` (from the first warm-up frame) given by `gaze`. `seed` seeds the noise
+/// feed.
+pub fn run_frames(
+    cfg: &OpenLoopConfig,
+    scene: &SimConfig,
+    seed: u64,
+    gaze: &mut dyn FnMut(f64) -> Fixation,
+) -> Result<RunResult, BenchError> {
+    if cfg.timing_frames == 0 && cfg.budgets.iter().any(|b| matches!(b, Budget::Wall(_))) {
+        return Err(BenchError::Invalid(
+            "wall-clock budgets need at least one timing frame".into(),
+        ));
+    }
+    let base = SimConfig {
+        budget: BudgetSpec::Exact,
+        scheduler: SchedulerKind::Sequential,
+        audit: false,
+        ..scene.clone()
+    };
+    let n = base.scene.bodies;
+    let mut source = Simulation::new(base.clone())?;
     let dt = source.config().scene.dt;
     let clock = InstantClock::new();
     for _ in 0..cfg.warmup {
         source.step(None, &FrozenClock);
     }
     // Colliders: one per (condition, budget, scheduler), plus one exact collider for timing.
-    let mut exact = Collider::new(&sim_config(n, seed), source.tree(), source.viewer())?;
+    let mut exact = Collider::new(&base, source.tree(), source.viewer())?;
     let mut colliders: Vec<Vec<Vec<Collider>>> = Vec::new();
     for c in &cfg.conditions {
         let mut per_budget = Vec::new();
         for _ in &cfg.budgets {
             let mut v = Vec::new();
             for s in &c.schedulers {
-                let base = sim_config(n, seed);
                 let sc = SimConfig {
                     scheduler: s.kind,
                     priced: s.priced,
@@ -464,7 +491,7 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
                     eccentricity_threshold_deg: s
                         .threshold_deg
                         .unwrap_or(base.eccentricity_threshold_deg),
-                    ..base
+                    ..base.clone()
                 };
                 v.push(Collider::new(&sc, source.tree(), source.viewer())?);
             }
@@ -474,7 +501,7 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
     }
     // Time the exact narrow phase on frames before the recorded ones.
     let mut times = Vec::new();
-    for _ in 0..cfg.timing_frames.max(1) {
+    for _ in 0..cfg.timing_frames {
         source.step(None, &FrozenClock);
         let mut r = FrameReport::default();
         let mut p = PhaseProfile::default();
@@ -489,7 +516,7 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
         times.push(p.prioritise_ns + p.narrow_ns);
     }
     times.sort_unstable();
-    let exact_ns = times[times.len() / 2] as f64;
+    let exact_ns = times.get(times.len() / 2).map_or(0.0, |&t| t as f64);
 
     let frames = cfg.frames_for(n);
     let nc = cfg.conditions.len();
@@ -514,8 +541,8 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
     let mut noise = SplitMix64::new(seed ^ 0x0015_E5EE_D000_0000);
     for f in 0..frames {
         let t = f64::from(cfg.warmup + cfg.timing_frames + f) * dt;
-        let fixation = gaze.at(t);
-        let before = gaze.at(t - dt);
+        let fixation = gaze(t);
+        let before = gaze(t - dt);
         let in_saccade = display.visual_angle_deg(
             viewer.to_pixels(fixation.x, fixation.y),
             viewer.to_pixels(before.x, before.y),
@@ -552,11 +579,12 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
                 GazeFeed::Centre => centre,
                 GazeFeed::Bias { deg } => shifted(deg, 0.0),
                 GazeFeed::Noise { sd_deg } => shifted(sd_deg * g1, sd_deg * g2),
-                GazeFeed::Latency { ms } => gaze.at((t - ms * 1e-3).max(0.0)),
+                GazeFeed::Latency { ms } => gaze((t - ms * 1e-3).max(0.0)),
             };
             for (bi, budget) in cfg.budgets.iter().enumerate() {
                 let fb = match *budget {
                     Budget::Tests(x) => FrameBudget::Tests((x * frame_tests as f64).round() as u64),
+                    Budget::FixedTests(k) => FrameBudget::Tests(k),
                     Budget::Wall(x) => FrameBudget::Wall((x * exact_ns).round() as u64),
                 };
                 let k = cond.schedulers.len();
@@ -568,7 +596,7 @@ pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, Ben
                     let mut r = FrameReport::default();
                     let mut p = PhaseProfile::default();
                     let clk: &dyn Clock = match budget {
-                        Budget::Tests(_) => &FrozenClock,
+                        Budget::Tests(_) | Budget::FixedTests(_) => &FrozenClock,
                         Budget::Wall(_) => &clock,
                     };
                     col.collide(&input, Some(fed), fb, clk, &mut r, &mut p);

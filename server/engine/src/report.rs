@@ -1,13 +1,13 @@
 //! What a frame reports (paper section 4's per-frame record, DESIGN.md "Frame record").
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::config::MAX_DEPTH;
 use crate::fixation::Fixation;
 
 /// Time spent in each phase of the frame, nanoseconds by the caller's clock (all 0 with a frozen
 /// clock). `collision` = broad + prioritise + narrow + response is the paper's T.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct PhaseProfile {
     /// Integration of positions and orientations.
     pub integrate_ns: u64,
@@ -37,7 +37,7 @@ impl PhaseProfile {
 }
 
 /// The exact answer for the frame's deemed pairs (audit mode).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct AuditReport {
     /// Deemed pairs that are not colliding (true false positives).
     pub false_positives: u32,
@@ -56,7 +56,7 @@ pub struct AuditReport {
 pub const FOVEAL_DEG: f64 = 5.0;
 
 /// One frame's record.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct FrameReport {
     /// Frame number, from 0.
     pub index: u64,
