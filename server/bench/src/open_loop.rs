@@ -835,6 +835,18 @@ pub struct OpenLoopOutput {
     pub report: String,
 }
 
+/// The head of a markdown table with a column per budget: `| scheduler | <budget> | ... |` and
+/// its rule, each ending in a newline.
+pub(crate) fn budget_table_head(budgets: &[Budget]) -> String {
+    let mut head = String::from("| scheduler |");
+    let mut rule = String::from("| --- |");
+    for b in budgets {
+        let _ = write!(head, " {} |", b.label());
+        rule.push_str(" --- |");
+    }
+    format!("{head}\n{rule}\n")
+}
+
 /// Run `cfg` and write `open_loop_runs.csv`, `open_loop_summary.csv` and `open_loop_report.md`
 /// under `cfg.out`, the report stamped with the machine's load average before and after.
 pub fn run_and_write(cfg: &OpenLoopConfig) -> Result<OpenLoopOutput, BenchError> {
@@ -903,13 +915,7 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
             } else {
                 let _ = writeln!(s, "**{}**\n", cond.name);
             }
-            let mut head = String::from("| scheduler |");
-            let mut rule = String::from("| --- |");
-            for b in &cfg.budgets {
-                let _ = write!(head, " {} |", b.label());
-                rule.push_str(" --- |");
-            }
-            let _ = writeln!(s, "{head}\n{rule}");
+            s.push_str(&budget_table_head(&cfg.budgets));
             let labels: Vec<String> = cond
                 .schedulers
                 .iter()

@@ -252,13 +252,7 @@ fn open_loop_segment(i: usize, seg: &Segment<'_>, fractions: &[f64]) -> Result<S
         runs[0].exact_tests
     );
     s.push_str("True P per frame (mean over the frames):\n\n");
-    let mut head = String::from("| scheduler |");
-    let mut rule = String::from("| --- |");
-    for b in &cfg.budgets {
-        let _ = write!(head, " {} |", b.label());
-        rule.push_str(" --- |");
-    }
-    let _ = writeln!(s, "{head}\n{rule}");
+    s.push_str(&crate::open_loop::budget_table_head(&cfg.budgets));
     let cond = &cfg.conditions[0];
     for label in cond
         .schedulers
