@@ -13,12 +13,11 @@
 use std::io;
 use std::time::Duration;
 
-use rmpv::Value;
 use tokio::sync::mpsc;
 use tracing::{debug, info};
 use zeromq::{ReqSocket, Socket, SocketOptions, SocketRecv, SocketSend, SubSocket, ZmqMessage};
 
-use crate::gaze::pupil::{self, PupilGaze};
+use crate::gaze::pupil;
 use crate::gaze::{Eye, ParseError};
 use crate::source::{CHANNEL_CAPACITY, SourceError, SourceItem};
 
@@ -246,29 +245,13 @@ fn datums(message: usize, frames: &ZmqMessage, options: &PupilOptions) -> Vec<So
     let Some(payload) = frames.get(1) else {
         return malformed("payload", "the message has no payload frame".into());
     };
-    let value = match rmpv::decode::read_value(&mut &payload[..]) {
-        Ok(value) => value,
-        Err(err) => return malformed("payload", format!("is not msgpack: {err}")),
-    };
     let topic = frames
         .get(0)
         .map(|t| String::from_utf8_lossy(t).into_owned())
         .unwrap_or_default();
-    let gazes = if options.surface.is_some() {
-        match field(&value, "gaze_on_surfaces") {
-            Some(Value::Array(entries)) => entries
-                .iter()
-                .map(|entry| decode_gaze(entry, &topic))
-                .collect(),
-            _ => {
-                return malformed(
-                    "gaze_on_surfaces",
-                    "is missing or not a list (is the surface tracker running?)".into(),
-                );
-            }
-        }
-    } else {
-        vec![decode_gaze(&value, &topic)]
+    let gazes = match pupil::decode_payload(payload, &topic, options.surface.is_some()) {
+        Ok(gazes) => gazes,
+        Err((field, reason)) => return malformed(field, reason),
     };
     gazes
         .into_iter()
@@ -296,64 +279,10 @@ fn datums(message: usize, frames: &ZmqMessage, options: &PupilOptions) -> Vec<So
         .collect()
 }
 
-/// The value of `key` in a msgpack map.
-fn field<'a>(map: &'a Value, key: &str) -> Option<&'a Value> {
-    map.as_map()?
-        .iter()
-        .find(|(k, _)| k.as_str() == Some(key))
-        .map(|(_, v)| v)
-}
-
-fn number(value: &Value) -> Option<f64> {
-    value
-        .as_f64()
-        .or_else(|| value.as_i64().map(|v| v as f64))
-        .or_else(|| value.as_u64().map(|v| v as f64))
-}
-
-/// One gaze datum (a gaze message or a `gaze_on_surfaces` entry); `topic` is the message's,
-/// used when the datum has none of its own.
-fn decode_gaze(datum: &Value, topic: &str) -> Result<PupilGaze, (&'static str, String)> {
-    if datum.as_map().is_none() {
-        return Err(("datum", "is not a map".into()));
-    }
-    let num = |key: &'static str| {
-        let value = field(datum, key).ok_or((key, "is missing".to_owned()))?;
-        number(value).ok_or((key, format!("{value} is not a number")))
-    };
-    let norm_pos = match field(datum, "norm_pos").and_then(Value::as_array) {
-        Some(pair) if pair.len() == 2 => match (number(&pair[0]), number(&pair[1])) {
-            (Some(x), Some(y)) => [x, y],
-            _ => return Err(("norm_pos", "holds a value that is not a number".into())),
-        },
-        _ => return Err(("norm_pos", "is missing or not an [x, y] pair".into())),
-    };
-    let topic = field(datum, "topic")
-        .and_then(Value::as_str)
-        .unwrap_or(topic)
-        .to_owned();
-    // Pupil datums in base_data carry their eye as `id`; surface entries hold [topic, time]
-    // pairs there instead, which say nothing more than the topic.
-    let base_eyes = field(datum, "base_data")
-        .and_then(Value::as_array)
-        .map(|base| {
-            base.iter()
-                .filter_map(|b| field(b, "id").and_then(Value::as_u64))
-                .filter_map(|id| u8::try_from(id).ok())
-                .collect()
-        })
-        .unwrap_or_default();
-    Ok(PupilGaze {
-        topic,
-        norm_pos,
-        confidence: num("confidence")?,
-        timestamp: num("timestamp")?,
-        base_eyes,
-    })
-}
-
 #[cfg(test)]
 mod tests {
+    use rmpv::Value;
+
     use super::*;
 
     fn message(topic: &str, payload: &Value) -> ZmqMessage {

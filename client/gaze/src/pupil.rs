@@ -3,8 +3,8 @@
 //! Pupil publishes gaze on topics such as `gaze.3d.0.` (eye 0 only), `gaze.3d.1.` (eye 1 only)
 //! and `gaze.3d.01.` (both eyes mapped together; `gaze.2d.*` for the 2D pipeline). Pupil numbers
 //! its eye cameras from the wearer's point of view: eye 0 is the **right** eye, eye 1 the
-//! **left**. A datum is a msgpack dict; the fields used here are decoded by the caller into a
-//! [`PupilGaze`], so this module stays pure.
+//! **left**. A datum is a msgpack dict, decoded here ([`decode_payload`]) from the bytes the
+//! caller received, so the network side only moves bytes.
 //!
 //! Mapping to [`GazeSample`]:
 //! - `norm_pos` `[x, y]` is normalised with the origin at the **bottom**-left; foveal's origin is
@@ -20,7 +20,40 @@
 //! - the eye comes from the topic; a topic that does not say (older versions publish plain
 //!   `gaze`) falls back to the eyes of `base_data`.
 
+use rmpv::Value;
+
 use super::{Eye, GazeSample};
+
+/// A field of a datum that did not decode, and why.
+pub type DecodeError = (&'static str, String);
+
+/// The gaze datums of one message's msgpack `payload` on `topic`: one for a gaze datum, one per
+/// `gaze_on_surfaces` entry when `surface` is set, each decoded or naming its bad field.
+///
+/// # Errors
+/// The payload is not msgpack, or (with `surface`) has no `gaze_on_surfaces` list.
+pub fn decode_payload(
+    payload: &[u8],
+    topic: &str,
+    surface: bool,
+) -> Result<Vec<Result<PupilGaze, DecodeError>>, DecodeError> {
+    let value = rmpv::decode::read_value(&mut &payload[..])
+        .map_err(|err| ("payload", format!("is not msgpack: {err}")))?;
+    if surface {
+        match field(&value, "gaze_on_surfaces") {
+            Some(Value::Array(entries)) => Ok(entries
+                .iter()
+                .map(|entry| decode_gaze(entry, topic))
+                .collect()),
+            _ => Err((
+                "gaze_on_surfaces",
+                "is missing or not a list (is the surface tracker running?)".into(),
+            )),
+        }
+    } else {
+        Ok(vec![decode_gaze(&value, topic)])
+    }
+}
 
 /// Confidence below which Pupil Labs advise discarding a datum (their documentation: "data with
 /// confidence below 0.6 should be discarded").
@@ -110,6 +143,62 @@ impl PupilGaze {
             fixation: None,
         }
     }
+}
+
+/// The value of `key` in a msgpack map.
+fn field<'a>(map: &'a Value, key: &str) -> Option<&'a Value> {
+    map.as_map()?
+        .iter()
+        .find(|(k, _)| k.as_str() == Some(key))
+        .map(|(_, v)| v)
+}
+
+fn number(value: &Value) -> Option<f64> {
+    value
+        .as_f64()
+        .or_else(|| value.as_i64().map(|v| v as f64))
+        .or_else(|| value.as_u64().map(|v| v as f64))
+}
+
+/// One gaze datum (a gaze message or a `gaze_on_surfaces` entry); `topic` is the message's,
+/// used when the datum has none of its own.
+fn decode_gaze(datum: &Value, topic: &str) -> Result<PupilGaze, DecodeError> {
+    if datum.as_map().is_none() {
+        return Err(("datum", "is not a map".into()));
+    }
+    let num = |key: &'static str| {
+        let value = field(datum, key).ok_or((key, "is missing".to_owned()))?;
+        number(value).ok_or((key, format!("{value} is not a number")))
+    };
+    let norm_pos = match field(datum, "norm_pos").and_then(Value::as_array) {
+        Some(pair) if pair.len() == 2 => match (number(&pair[0]), number(&pair[1])) {
+            (Some(x), Some(y)) => [x, y],
+            _ => return Err(("norm_pos", "holds a value that is not a number".into())),
+        },
+        _ => return Err(("norm_pos", "is missing or not an [x, y] pair".into())),
+    };
+    let topic = field(datum, "topic")
+        .and_then(Value::as_str)
+        .unwrap_or(topic)
+        .to_owned();
+    // Pupil datums in base_data carry their eye as `id`; surface entries hold [topic, time]
+    // pairs there instead, which say nothing more than the topic.
+    let base_eyes = field(datum, "base_data")
+        .and_then(Value::as_array)
+        .map(|base| {
+            base.iter()
+                .filter_map(|b| field(b, "id").and_then(Value::as_u64))
+                .filter_map(|id| u8::try_from(id).ok())
+                .collect()
+        })
+        .unwrap_or_default();
+    Ok(PupilGaze {
+        topic,
+        norm_pos,
+        confidence: num("confidence")?,
+        timestamp: num("timestamp")?,
+        base_eyes,
+    })
 }
 
 #[cfg(test)]
