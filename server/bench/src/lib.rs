@@ -71,6 +71,8 @@ pub struct StudyOutput {
     pub wall_s: f64,
     /// The open-loop report (markdown, with the `clairvoyant` rows), if that part ran.
     pub open_loop_report: Option<String>,
+    /// The sensitivity grid's report (markdown), if that part ran.
+    pub grid_report: Option<String>,
 }
 
 impl StudyConfig {
@@ -196,9 +198,26 @@ pub fn run_study(cfg: &StudyConfig) -> Result<StudyOutput, BenchError> {
             jobs: cfg.jobs.max(1),
             ..ol.clone()
         };
-        let written = open_loop::run_and_write(&ol)?;
-        out.files.extend(written.files);
-        out.open_loop_report = Some(written.report);
+        // The grid runs on the open-loop part's frames: one exact run, one set of truths.
+        let grid = cfg.grid.as_ref().map(|g| open_loop::OpenLoopConfig {
+            ns: ol.ns.clone(),
+            seeds: ol.seeds.clone(),
+            frames: ol.frames.clone(),
+            warmup: ol.warmup,
+            timing_frames: ol.timing_frames,
+            jobs: ol.jobs,
+            out: cfg.out.join("grid"),
+            ..g.clone()
+        });
+        let mut parts = vec![&ol];
+        parts.extend(grid.as_ref());
+        let written = open_loop::run_and_write_parts(&parts)?;
+        for w in &written {
+            out.files.extend(w.files.iter().cloned());
+        }
+        let mut reports = written.into_iter().map(|w| w.report);
+        out.open_loop_report = reports.next();
+        out.grid_report = reports.next();
     }
     out.runs = runs;
     out.wall_s = started.elapsed().as_secs_f64();

@@ -293,6 +293,9 @@ struct StudyArgs {
     /// Skip the open-loop comparison of schedulers (identical frames, clairvoyant bound).
     #[arg(long)]
     no_open_loop: bool,
+    /// Skip the sensitivity grid (run with the open-loop part on its frames; see `open-loop --grid`).
+    #[arg(long)]
+    no_grid: bool,
     /// Instead of the study, re-run this recorded session (`foveal-server --record FILE`):
     /// closed loop bit for bit, then open loop under every scheduler (as `replay FILE`).
     #[arg(long)]
@@ -331,6 +334,9 @@ impl StudyArgs {
         }
         if self.no_open_loop || self.curves {
             c.open_loop = None;
+        }
+        if self.no_grid || c.open_loop.is_none() {
+            c.grid = None;
         }
         if self.curves || self.with_curves {
             c.curves.get_or_insert_with(CurvesConfig::default);

@@ -441,10 +441,38 @@ fn sim_config(n: u32, seed: u64) -> SimConfig {
     }
 }
 
+/// One distinct scheduling run of a frame at one budget. Cells that would schedule identically
+/// (the same scheduler and switches, scheduling model, gaze feed and budget, in any part of the
+/// protocol) share one run, and each measures the pairs it deemed with its own model: the deemed
+/// set does not depend on the measuring model. Round-robin reads neither model nor gaze, so one
+/// run per budget serves every condition; the priced scheduler of a model-mismatch condition is
+/// the matched condition's. Under sphere-test budgets sharing changes no figure (the runs are
+/// deterministic); under wall-clock budgets the cells it serves are measured on one timed run.
+struct ScheduleRun {
+    spec: SchedulerSpec,
+    schedule_model: PerceptualModel,
+    feed: GazeFeed,
+    /// Index into the union of the parts' budgets.
+    budget: usize,
+    collider: Collider,
+    /// The (part, condition, budget, scheduler) cells this run serves.
+    cells: Vec<(usize, usize, usize, usize)>,
+}
+
 /// Run one (N, seed) of the paper scene, the scripted viewer looking.
 pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, BenchError> {
     let mut gaze = ScriptedGaze::new(seed);
     run_frames(cfg, &sim_config(n, seed), seed, &mut |t| gaze.at(t))
+}
+
+/// [`run_one`] for several parts of a protocol at once (see [`run_parts`]).
+fn run_one_parts(
+    parts: &[&OpenLoopConfig],
+    n: u32,
+    seed: u64,
+) -> Result<Vec<RunResult>, BenchError> {
+    let mut gaze = ScriptedGaze::new(seed);
+    run_frames_parts(parts, &sim_config(n, seed), seed, &mut |t| gaze.at(t))
 }
 
 /// Run the comparison on the frames of one exact run of `scene` (its budget, scheduler and
@@ -457,7 +485,39 @@ pub fn run_frames(
     seed: u64,
     gaze: &mut dyn FnMut(f64) -> Fixation,
 ) -> Result<RunResult, BenchError> {
-    if cfg.timing_frames == 0 && cfg.budgets.iter().any(|b| matches!(b, Budget::Wall(_))) {
+    let mut v = run_frames_parts(&[cfg], scene, seed, gaze)?;
+    Ok(v.remove(0))
+}
+
+/// [`run_frames`] for several parts of a protocol (say the standard comparison and the
+/// sensitivity grid) on the same frames: the scene is stepped, its pairs' truths learnt and each
+/// distinct scheduling run made once for all parts, and each part gets its own result. The parts
+/// must agree on warm-up, timing frames and frames per N.
+pub fn run_frames_parts(
+    parts: &[&OpenLoopConfig],
+    scene: &SimConfig,
+    seed: u64,
+    gaze: &mut dyn FnMut(f64) -> Fixation,
+) -> Result<Vec<RunResult>, BenchError> {
+    let Some(&cfg) = parts.first() else {
+        return Ok(Vec::new());
+    };
+    let n = scene.scene.bodies;
+    for p in parts {
+        if p.warmup != cfg.warmup
+            || p.timing_frames != cfg.timing_frames
+            || p.frames_for(n) != cfg.frames_for(n)
+        {
+            return Err(BenchError::Invalid(
+                "parts run on the same frames must agree on warm-up, timing frames and frames"
+                    .into(),
+            ));
+        }
+    }
+    let any_wall = parts
+        .iter()
+        .any(|p| p.budgets.iter().any(|b| matches!(b, Budget::Wall(_))));
+    if cfg.timing_frames == 0 && any_wall {
         return Err(BenchError::Invalid(
             "wall-clock budgets need at least one timing frame".into(),
         ));
@@ -468,38 +528,98 @@ pub fn run_frames(
         audit: false,
         ..scene.clone()
     };
-    let n = base.scene.bodies;
     let mut source = Simulation::new(base.clone())?;
     let dt = source.config().scene.dt;
     let clock = InstantClock::new();
     for _ in 0..cfg.warmup {
         source.step(None, &FrozenClock);
     }
-    // Colliders: one per (condition, budget, scheduler), plus one exact collider for timing.
-    let mut exact = Collider::new(&base, source.tree(), source.viewer())?;
-    let mut colliders: Vec<Vec<Vec<Collider>>> = Vec::new();
-    for c in &cfg.conditions {
-        let mut per_budget = Vec::new();
-        for _ in &cfg.budgets {
-            let mut v = Vec::new();
-            for s in &c.schedulers {
-                let sc = SimConfig {
-                    scheduler: s.kind,
-                    priced: s.priced,
-                    schedule_model: c.schedule_model,
-                    measure_model: c.measure_model,
-                    eccentricity_threshold_deg: s
-                        .threshold_deg
-                        .unwrap_or(base.eccentricity_threshold_deg),
-                    ..base.clone()
-                };
-                v.push(Collider::new(&sc, source.tree(), source.viewer())?);
+    // The union of the parts' budgets, and each part's budgets in it.
+    let mut budgets: Vec<Budget> = Vec::new();
+    let budget_of: Vec<Vec<usize>> = parts
+        .iter()
+        .map(|p| {
+            p.budgets
+                .iter()
+                .map(|b| index_of(&mut budgets, *b))
+                .collect()
+        })
+        .collect();
+    // True weights and bound items per distinct measuring model (conditions share them).
+    let mut models: Vec<PerceptualModel> = Vec::new();
+    let model_of: Vec<Vec<usize>> = parts
+        .iter()
+        .map(|p| {
+            p.conditions
+                .iter()
+                .map(|c| index_of(&mut models, c.measure_model))
+                .collect()
+        })
+        .collect();
+    // Distinct scheduling runs, each with its collider; `run_of[p][ci][bi][si]` is a cell's run.
+    let mut runs: Vec<ScheduleRun> = Vec::new();
+    let mut run_of: Vec<Vec<Vec<Vec<usize>>>> = Vec::new();
+    for (pi, p) in parts.iter().enumerate() {
+        let mut per_cond = Vec::new();
+        for (ci, c) in p.conditions.iter().enumerate() {
+            let mut per_budget = Vec::new();
+            for (bi, &ub) in budget_of[pi].iter().enumerate() {
+                let mut per_sched = Vec::new();
+                for (si, spec) in c.schedulers.iter().enumerate() {
+                    let blind = matches!(
+                        spec.kind,
+                        SchedulerKind::RoundRobin | SchedulerKind::Sequential
+                    );
+                    let (model, feed) = if blind {
+                        (PerceptualModel::default(), GazeFeed::Viewer)
+                    } else {
+                        (c.schedule_model, c.feed)
+                    };
+                    let same = |r: &ScheduleRun| {
+                        r.budget == ub
+                            && r.spec.kind == spec.kind
+                            && r.spec.priced == spec.priced
+                            && r.spec.threshold_deg == spec.threshold_deg
+                            && r.schedule_model == model
+                            && r.feed == feed
+                    };
+                    let u = match runs.iter().position(same) {
+                        Some(u) => u,
+                        None => {
+                            let sc = SimConfig {
+                                scheduler: spec.kind,
+                                priced: spec.priced,
+                                schedule_model: model,
+                                eccentricity_threshold_deg: spec
+                                    .threshold_deg
+                                    .unwrap_or(base.eccentricity_threshold_deg),
+                                ..base.clone()
+                            };
+                            runs.push(ScheduleRun {
+                                spec: spec.clone(),
+                                schedule_model: model,
+                                feed,
+                                budget: ub,
+                                collider: Collider::new(&sc, source.tree(), source.viewer())?,
+                                cells: Vec::new(),
+                            });
+                            runs.len() - 1
+                        }
+                    };
+                    runs[u].cells.push((pi, ci, bi, si));
+                    per_sched.push(u);
+                }
+                per_budget.push(per_sched);
             }
-            per_budget.push(v);
+            per_cond.push(per_budget);
         }
-        colliders.push(per_budget);
+        run_of.push(per_cond);
     }
+    let by_budget: Vec<Vec<usize>> = (0..budgets.len())
+        .map(|ub| (0..runs.len()).filter(|&u| runs[u].budget == ub).collect())
+        .collect();
     // Time the exact narrow phase on frames before the recorded ones.
+    let mut exact = Collider::new(&base, source.tree(), source.viewer())?;
     let mut times = Vec::new();
     for _ in 0..cfg.timing_frames {
         source.step(None, &FrozenClock);
@@ -519,20 +639,30 @@ pub fn run_frames(
     let exact_ns = times.get(times.len() / 2).map_or(0.0, |&t| t as f64);
 
     let frames = cfg.frames_for(n);
-    let nc = cfg.conditions.len();
-    let nb = cfg.budgets.len();
-    let mut cells: Vec<Vec<Vec<Cell>>> = cfg
-        .conditions
+    let mut cells: Vec<Vec<Vec<Vec<Cell>>>> = parts
         .iter()
-        .map(|c| vec![vec![Cell::default(); c.schedulers.len()]; nb])
+        .map(|p| {
+            p.conditions
+                .iter()
+                .map(|c| vec![vec![Cell::default(); c.schedulers.len()]; p.budgets.len()])
+                .collect()
+        })
         .collect();
-    let mut bound = vec![vec![0.0; nb]; nc];
-    let mut all_deemed = vec![0.0; nc];
+    let mut bound: Vec<Vec<Vec<f64>>> = parts
+        .iter()
+        .map(|p| vec![vec![0.0; p.budgets.len()]; p.conditions.len()])
+        .collect();
+    let mut all_deemed: Vec<Vec<f64>> = parts
+        .iter()
+        .map(|p| vec![0.0; p.conditions.len()])
+        .collect();
+    let mut counted: Vec<Vec<u32>> = parts.iter().map(|p| vec![0; p.conditions.len()]).collect();
+    let mut count: Vec<Vec<bool>> = counted.iter().map(|c| vec![true; c.len()]).collect();
     let mut truths: Vec<PairTruth> = Vec::new();
-    let mut weights: Vec<f64> = Vec::new();
-    let mut items: Vec<(f64, u32)> = Vec::new();
+    let mut weights: Vec<Vec<f64>> = vec![Vec::new(); models.len()];
+    let mut items: Vec<Vec<(f64, u32)>> = vec![Vec::new(); models.len()];
+    let mut run_tests = vec![0u64; runs.len()];
     let mut exact_tests = 0.0;
-    let mut counted = vec![0u32; nc];
     let centre = Fixation::at(0.5, 0.5);
     let viewer = *source.viewer();
     let display = viewer.display;
@@ -553,105 +683,147 @@ pub fn run_frames(
         let input = source.frame_input();
         clairvoyant::truths(input.tree, input.world, input.candidates, &mut truths);
         let fix_px = input.viewer.to_pixels(fixation.x, fixation.y);
-        for (ci, cond) in cfg.conditions.iter().enumerate() {
+        for (mi, model) in models.iter().enumerate() {
             let view = FrameView {
                 viewer: input.viewer,
                 fixation_px: fix_px,
-                model: cond.measure_model,
+                model: *model,
                 uncertainty_deg: 0.0,
             };
-            weights.clear();
-            weights.extend(truths.iter().map(|t| t.weight(&view)));
-            let count = !(cond.suppress_saccades && in_saccade);
-            if count {
-                counted[ci] += 1;
-                all_deemed[ci] += weights.iter().sum::<f64>();
+            let w = &mut weights[mi];
+            w.clear();
+            w.extend(truths.iter().map(|t| t.weight(&view)));
+            let it = &mut items[mi];
+            it.clear();
+            it.extend(w.iter().zip(&truths).map(|(&w, t)| (w, t.cost)));
+            clairvoyant::sort_for_bound(it);
+        }
+        for (pi, p) in parts.iter().enumerate() {
+            for (ci, c) in p.conditions.iter().enumerate() {
+                let counts = !(c.suppress_saccades && in_saccade);
+                count[pi][ci] = counts;
+                if counts {
+                    counted[pi][ci] += 1;
+                    all_deemed[pi][ci] += weights[model_of[pi][ci]].iter().sum::<f64>();
+                }
             }
-            let shifted = |dx_deg: f64, dy_deg: f64| {
-                let (w, h) = (f64::from(display.width_px), f64::from(display.height_px));
-                Fixation::at(
-                    (fixation.x + dx_deg * px_per_deg / w).clamp(0.0, 1.0),
-                    (fixation.y + dy_deg * px_per_deg / h).clamp(0.0, 1.0),
-                )
+        }
+        let shifted = |dx_deg: f64, dy_deg: f64| {
+            let (w, h) = (f64::from(display.width_px), f64::from(display.height_px));
+            Fixation::at(
+                (fixation.x + dx_deg * px_per_deg / w).clamp(0.0, 1.0),
+                (fixation.y + dy_deg * px_per_deg / h).clamp(0.0, 1.0),
+            )
+        };
+        for (ub, budget) in budgets.iter().enumerate() {
+            let fb = match *budget {
+                Budget::Tests(x) => FrameBudget::Tests((x * frame_tests as f64).round() as u64),
+                Budget::FixedTests(k) => FrameBudget::Tests(k),
+                Budget::Wall(x) => FrameBudget::Wall((x * exact_ns).round() as u64),
             };
-            let fed = match cond.feed {
-                GazeFeed::Viewer => fixation,
-                GazeFeed::Centre => centre,
-                GazeFeed::Bias { deg } => shifted(deg, 0.0),
-                GazeFeed::Noise { sd_deg } => shifted(sd_deg * g1, sd_deg * g2),
-                GazeFeed::Latency { ms } => gaze((t - ms * 1e-3).max(0.0)),
+            let clk: &dyn Clock = match budget {
+                Budget::Tests(_) | Budget::FixedTests(_) => &FrozenClock,
+                Budget::Wall(_) => &clock,
             };
-            for (bi, budget) in cfg.budgets.iter().enumerate() {
-                let fb = match *budget {
-                    Budget::Tests(x) => FrameBudget::Tests((x * frame_tests as f64).round() as u64),
-                    Budget::FixedTests(k) => FrameBudget::Tests(k),
-                    Budget::Wall(x) => FrameBudget::Wall((x * exact_ns).round() as u64),
+            let here = &by_budget[ub];
+            for j in 0..here.len() {
+                // Rotate the order so no scheduler always runs first into cold caches.
+                let u = here[(j + f as usize) % here.len()];
+                let run = &mut runs[u];
+                let fed = match run.feed {
+                    GazeFeed::Viewer => fixation,
+                    GazeFeed::Centre => centre,
+                    GazeFeed::Bias { deg } => shifted(deg, 0.0),
+                    GazeFeed::Noise { sd_deg } => shifted(sd_deg * g1, sd_deg * g2),
+                    GazeFeed::Latency { ms } => gaze((t - ms * 1e-3).max(0.0)),
                 };
-                let k = cond.schedulers.len();
-                let mut max_tests = 0u64;
-                for j in 0..k {
-                    // Rotate the order so no scheduler always runs first into cold caches.
-                    let si = (j + f as usize) % k;
-                    let col = &mut colliders[ci][bi][si];
-                    let mut r = FrameReport::default();
-                    let mut p = PhaseProfile::default();
-                    let clk: &dyn Clock = match budget {
-                        Budget::Tests(_) | Budget::FixedTests(_) => &FrozenClock,
-                        Budget::Wall(_) => &clock,
-                    };
-                    col.collide(&input, Some(fed), fb, clk, &mut r, &mut p);
-                    let tp: f64 = col
+                let mut r = FrameReport::default();
+                let mut prof = PhaseProfile::default();
+                run.collider
+                    .collide(&input, Some(fed), fb, clk, &mut r, &mut prof);
+                run_tests[u] = r.sphere_tests;
+                for &(pi, ci, bi, si) in &run.cells {
+                    if !count[pi][ci] {
+                        continue;
+                    }
+                    let tp: f64 = run
+                        .collider
                         .pairs()
                         .iter()
-                        .zip(&weights)
+                        .zip(&weights[model_of[pi][ci]])
                         .filter(|(p, _)| {
                             p.status == foveal_engine::narrow_phase::PairStatus::Deemed
                         })
                         .map(|(_, w)| w)
                         .sum();
-                    if !count {
-                        continue;
-                    }
-                    let cell = &mut cells[ci][bi][si];
+                    let cell = &mut cells[pi][ci][bi][si];
                     cell.true_p += tp;
                     cell.tests += r.sphere_tests as f64;
-                    cell.prioritise_ms += p.prioritise_ns as f64 * 1e-6;
-                    max_tests = max_tests.max(r.sphere_tests);
+                    cell.prioritise_ms += prof.prioritise_ns as f64 * 1e-6;
                 }
-                if !count {
+            }
+        }
+        // The bound of a frame at a budget: at the most tests any of its schedulers used.
+        for (pi, p) in parts.iter().enumerate() {
+            for ci in 0..p.conditions.len() {
+                if !count[pi][ci] {
                     continue;
                 }
-                items.clear();
-                items.extend(weights.iter().zip(&truths).map(|(&w, t)| (w, t.cost)));
-                bound[ci][bi] += clairvoyant::bound(&mut items, max_tests);
+                for bi in 0..p.budgets.len() {
+                    let max_tests = run_of[pi][ci][bi]
+                        .iter()
+                        .map(|&u| run_tests[u])
+                        .max()
+                        .unwrap_or(0);
+                    bound[pi][ci][bi] +=
+                        clairvoyant::bound_sorted(&items[model_of[pi][ci]], max_tests);
+                }
             }
         }
     }
     // Means over the frames each condition counted.
-    for ci in 0..nc {
-        let k = 1.0 / f64::from(counted[ci].max(1));
-        for c in cells[ci].iter_mut().flatten() {
-            c.true_p *= k;
-            c.tests *= k;
-            c.prioritise_ms *= k;
+    let mut out = Vec::with_capacity(parts.len());
+    for (pi, p) in parts.iter().enumerate() {
+        let mut cells = std::mem::take(&mut cells[pi]);
+        let mut bound = std::mem::take(&mut bound[pi]);
+        let mut all_deemed = std::mem::take(&mut all_deemed[pi]);
+        for ci in 0..p.conditions.len() {
+            let k = 1.0 / f64::from(counted[pi][ci].max(1));
+            for c in cells[ci].iter_mut().flatten() {
+                c.true_p *= k;
+                c.tests *= k;
+                c.prioritise_ms *= k;
+            }
+            for b in &mut bound[ci] {
+                *b *= k;
+            }
+            all_deemed[ci] *= k;
         }
-        for b in &mut bound[ci] {
-            *b *= k;
-        }
-        all_deemed[ci] *= k;
+        let k = 1.0 / f64::from(frames.max(1));
+        out.push(RunResult {
+            n,
+            seed,
+            frames,
+            exact_narrow_ms: exact_ns * 1e-6,
+            exact_tests: exact_tests * k,
+            cells,
+            bound,
+            all_deemed,
+            counted: std::mem::take(&mut counted[pi]),
+        });
     }
-    let k = 1.0 / f64::from(frames.max(1));
-    Ok(RunResult {
-        n,
-        seed,
-        frames,
-        exact_narrow_ms: exact_ns * 1e-6,
-        exact_tests: exact_tests * k,
-        cells,
-        bound,
-        all_deemed,
-        counted,
-    })
+    Ok(out)
+}
+
+/// The index of `x` in `v`, pushing it first if it is not there.
+fn index_of<T: PartialEq>(v: &mut Vec<T>, x: T) -> usize {
+    match v.iter().position(|y| *y == x) {
+        Some(k) => k,
+        None => {
+            v.push(x);
+            v.len() - 1
+        }
+    }
 }
 
 /// Two independent standard normal variates (Box-Muller).
@@ -665,20 +837,37 @@ fn gaussian_pair(rng: &mut SplitMix64) -> (f64, f64) {
 
 /// Run every (N, seed) on `cfg.jobs` threads; results in (N, seed) order.
 pub fn run(cfg: &OpenLoopConfig) -> Result<Vec<RunResult>, BenchError> {
+    let mut v = run_parts(&[cfg])?;
+    Ok(v.remove(0))
+}
+
+/// [`run`] for several parts of a protocol on the same frames (see [`run_frames_parts`]): per
+/// part, its results in (N, seed) order. The parts must agree on N, seeds and frames; the first
+/// part's `jobs` is used.
+pub fn run_parts(parts: &[&OpenLoopConfig]) -> Result<Vec<Vec<RunResult>>, BenchError> {
+    let Some(&cfg) = parts.first() else {
+        return Ok(Vec::new());
+    };
+    if parts.iter().any(|p| p.ns != cfg.ns || p.seeds != cfg.seeds) {
+        return Err(BenchError::Invalid(
+            "parts run on the same frames must agree on N and seeds".into(),
+        ));
+    }
     let plan: Vec<(u32, u64)> = cfg
         .ns
         .iter()
         .flat_map(|&n| cfg.seeds.iter().map(move |&s| (n, s)))
         .collect();
     let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<(usize, Result<RunResult, BenchError>)>> = Mutex::new(Vec::new());
+    type Slot = (usize, Result<Vec<RunResult>, BenchError>);
+    let results: Mutex<Vec<Slot>> = Mutex::new(Vec::new());
     std::thread::scope(|scope| {
         for _ in 0..cfg.jobs.clamp(1, plan.len().max(1)) {
             scope.spawn(|| {
                 loop {
                     let k = next.fetch_add(1, Ordering::Relaxed);
                     let Some(&(n, seed)) = plan.get(k) else { break };
-                    let r = run_one(cfg, n, seed);
+                    let r = run_one_parts(parts, n, seed);
                     if let Ok(mut v) = results.lock() {
                         v.push((k, r));
                     }
@@ -690,7 +879,13 @@ pub fn run(cfg: &OpenLoopConfig) -> Result<Vec<RunResult>, BenchError> {
         .into_inner()
         .map_err(|_| BenchError::Invalid("a worker thread panicked".into()))?;
     results.sort_by_key(|(k, _)| *k);
-    results.into_iter().map(|(_, r)| r).collect()
+    let mut per_part: Vec<Vec<RunResult>> = parts.iter().map(|_| Vec::new()).collect();
+    for (_, r) in results {
+        for (pi, run) in r?.into_iter().enumerate() {
+            per_part[pi].push(run);
+        }
+    }
+    Ok(per_part)
 }
 
 /// One row of the summary: a scheduler in a condition at a budget, across seeds.
@@ -850,6 +1045,13 @@ pub(crate) fn budget_table_head(budgets: &[Budget]) -> String {
 /// Run `cfg` and write `open_loop_runs.csv`, `open_loop_summary.csv` and `open_loop_report.md`
 /// under `cfg.out`, the report stamped with the machine's load average before and after.
 pub fn run_and_write(cfg: &OpenLoopConfig) -> Result<OpenLoopOutput, BenchError> {
+    let mut v = run_and_write_parts(&[cfg])?;
+    Ok(v.remove(0))
+}
+
+/// [`run_and_write`] for several parts run on the same frames ([`run_parts`]), each written under
+/// its own `out`; every report carries the load average and the wall time of the whole run.
+pub fn run_and_write_parts(parts: &[&OpenLoopConfig]) -> Result<Vec<OpenLoopOutput>, BenchError> {
     let load = || {
         std::fs::read_to_string("/proc/loadavg")
             .map(|s| s.trim().to_string())
@@ -857,27 +1059,47 @@ pub fn run_and_write(cfg: &OpenLoopConfig) -> Result<OpenLoopOutput, BenchError>
     };
     let load_start = load();
     let started = std::time::Instant::now();
-    let runs = run(cfg)?;
-    let rows = summarise(cfg, &runs);
-    let report = format!(
-        "{}\nLoad average at start: {}; at end: {}; wall time {:.0} s.\n",
-        markdown(cfg, &runs, &rows),
-        load_start,
-        load(),
-        started.elapsed().as_secs_f64()
-    );
-    std::fs::create_dir_all(&cfg.out).map_err(|e| BenchError::io(&cfg.out, e))?;
-    let mut files = Vec::new();
-    for (name, text) in [
-        ("open_loop_runs.csv", runs_csv(cfg, &runs)),
-        ("open_loop_summary.csv", summary_csv(&rows)),
-        ("open_loop_report.md", report.clone()),
-    ] {
-        let path = cfg.out.join(name);
-        std::fs::write(&path, text).map_err(|e| BenchError::io(&path, e))?;
-        files.push(path);
+    let all = run_parts(parts)?;
+    let (load_end, wall_s) = (load(), started.elapsed().as_secs_f64());
+    let mut outputs = Vec::new();
+    for (cfg, runs) in parts.iter().zip(&all) {
+        let rows = summarise(cfg, runs);
+        let shared = if parts.len() > 1 {
+            format!(" ({} parts on the same frames)", parts.len())
+        } else {
+            String::new()
+        };
+        let report = format!(
+            "{}\nLoad average at start: {}; at end: {}; wall time {:.0} s{shared}.\n",
+            markdown(cfg, runs, &rows),
+            load_start,
+            load_end,
+            wall_s
+        );
+        std::fs::create_dir_all(&cfg.out).map_err(|e| BenchError::io(&cfg.out, e))?;
+        let mut files = Vec::new();
+        for (name, text) in [
+            ("open_loop_runs.csv", runs_csv(cfg, runs)),
+            ("open_loop_summary.csv", summary_csv(&rows)),
+            ("open_loop_report.md", report.clone()),
+        ] {
+            let path = cfg.out.join(name);
+            std::fs::write(&path, text).map_err(|e| BenchError::io(&path, e))?;
+            files.push(path);
+        }
+        let figs = crate::figures::open_loop_figures(cfg, &rows);
+        if !figs.is_empty() {
+            let dir = cfg.out.join("figures");
+            std::fs::create_dir_all(&dir).map_err(|e| BenchError::io(&dir, e))?;
+            for (stem, fig) in &figs {
+                let r = crate::plots::render(fig, &dir.join(stem))?;
+                files.push(r.svg);
+                files.push(r.png);
+            }
+        }
+        outputs.push(OpenLoopOutput { files, report });
     }
-    Ok(OpenLoopOutput { files, report })
+    Ok(outputs)
 }
 
 /// Markdown tables: per N and condition, one row per scheduler, one column per budget, each cell
@@ -1081,6 +1303,56 @@ mod tests {
             let halved = r.ratio_rr.hi() < 0.5;
             assert_eq!(line.contains("yes"), halved, "{line} vs {:?}", r.ratio_rr);
         }
+    }
+
+    /// The standard comparison and the grid on the same frames, with every distinct scheduling
+    /// run made once for both, give each part exactly the figures it gets alone.
+    #[test]
+    fn parts_on_shared_frames_match_separate_runs_bit_for_bit() {
+        let tiny = |mut c: OpenLoopConfig| {
+            c.ns = vec![150];
+            c.seeds = vec![1, 2];
+            c.frames = vec![(150, 3)];
+            c.warmup = 5;
+            c.timing_frames = 1;
+            c.jobs = 2;
+            c
+        };
+        let mut a = tiny(OpenLoopConfig::standard());
+        a.budgets = vec![Budget::Tests(0.05), Budget::Tests(0.3)];
+        a.conditions.truncate(2);
+        // The grid's C = 5 condition repeats the standard one's round-robin, priority-only,
+        // expected-gain and priced runs; a second budget is its own.
+        let mut b = tiny(OpenLoopConfig::grid());
+        b.budgets = vec![Budget::Tests(0.3), Budget::Tests(0.5)];
+        b.conditions
+            .retain(|c| c.name == "F2 C=5deg" || c.name == "F1 px");
+        assert_eq!(b.conditions.len(), 2);
+        let shared = run_parts(&[&a, &b]).expect("shared");
+        for (cfg, together) in [&a, &b].into_iter().zip(&shared) {
+            let alone = run(cfg).expect("alone");
+            assert_eq!(alone.len(), together.len());
+            for (x, y) in alone.iter().zip(together) {
+                assert_eq!(x.cells.len(), y.cells.len());
+                for (cx, cy) in x
+                    .cells
+                    .iter()
+                    .flatten()
+                    .flatten()
+                    .zip(y.cells.iter().flatten().flatten())
+                {
+                    assert_eq!(cx.true_p.to_bits(), cy.true_p.to_bits());
+                    assert_eq!(cx.tests.to_bits(), cy.tests.to_bits());
+                }
+                assert_eq!(x.bound, y.bound);
+                assert_eq!(x.all_deemed, y.all_deemed);
+                assert!(x.cells.iter().flatten().flatten().any(|c| c.true_p > 0.0));
+            }
+        }
+        // Parts that disagree on the frames are refused, not run on the wrong ones.
+        let mut c = b.clone();
+        c.frames = vec![(150, 4)];
+        assert!(run_parts(&[&a, &c]).is_err());
     }
 
     fn condition(name: &str, feed: GazeFeed, suppress: bool) -> Condition {

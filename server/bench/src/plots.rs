@@ -370,12 +370,14 @@ fn draw_panel<DB: DrawingBackend>(
     Ok(())
 }
 
-/// A series' name without its ", estimate" or ", true" suffix: an estimate and its audited
-/// value share one colour and differ by line style.
+/// A series' name without its ", estimate", ", true" or ", centre-fed" suffix: an estimate and
+/// its audited value (or a scheduler and its screen-centre control) share one colour and differ
+/// by line style.
 fn base_name(s: &Series) -> &str {
     s.name
         .trim_end_matches(", estimate")
         .trim_end_matches(", true")
+        .trim_end_matches(", centre-fed")
 }
 
 /// Base names of a figure's series in order of first appearance: one colour each, the same in

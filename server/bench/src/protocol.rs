@@ -203,6 +203,9 @@ pub struct StudyConfig {
     pub curves: Option<CurvesConfig>,
     /// The open-loop comparison of schedulers, if run (written into [`Self::out`]).
     pub open_loop: Option<OpenLoopConfig>,
+    /// The sensitivity grid ([`OpenLoopConfig::grid`]), run with the open-loop part on the same
+    /// frames (its N, seeds and frames are the open-loop part's) and written under `out/grid`.
+    pub grid: Option<OpenLoopConfig>,
     /// Gaze source.
     pub gaze: GazeSpec,
     /// Perceptual model used both to schedule and to measure (paper figure 6(b): F2).
@@ -240,6 +243,7 @@ impl Default for StudyConfig {
             tests_budgets: Vec::new(),
             curves: None,
             open_loop: Some(OpenLoopConfig::standard()),
+            grid: Some(OpenLoopConfig::grid()),
             gaze: GazeSpec::Scripted,
             model: PerceptualModel::default(),
             threshold_deg: 5.0,
@@ -268,6 +272,7 @@ impl StudyConfig {
                 fractions: vec![0.01, 0.1, 0.5],
             }),
             open_loop: Some(OpenLoopConfig::quick()),
+            grid: Some(OpenLoopConfig::grid()),
             calibration_frames: 20,
             warmup_frames: 20,
             jobs: 2,

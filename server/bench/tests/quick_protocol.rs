@@ -28,6 +28,7 @@ fn tiny(out: PathBuf) -> StudyConfig {
             fractions: vec![0.05, 0.5],
         }),
         open_loop: Some(tiny_open_loop()),
+        grid: Some(tiny_grid()),
         calibration_frames: 3,
         warmup_frames: 2,
         jobs: 2,
@@ -48,6 +49,14 @@ fn tiny_open_loop() -> OpenLoopConfig {
     ol.budgets = vec![Budget::Tests(0.05), Budget::Tests(0.3)];
     ol.conditions.truncate(1);
     ol
+}
+
+/// The sensitivity grid at two models and one budget (its frames are the open-loop part's).
+fn tiny_grid() -> OpenLoopConfig {
+    let mut g = OpenLoopConfig::grid();
+    g.budgets = vec![Budget::Tests(0.3)];
+    g.conditions.truncate(2);
+    g
 }
 
 /// Parse a CSV: a header and rows of the same width whose non-empty fields are numbers, except
@@ -174,6 +183,15 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
     let report = res.open_loop_report.as_deref().expect("open-loop report");
     assert!(report.contains("| clairvoyant |"), "{report}");
     assert!(out.join("open_loop_report.md").is_file());
+    // The grid ran on the same frames and says where each scheduler halves P.
+    let grid = res.grid_report.as_deref().expect("grid report");
+    assert!(grid.contains("halves round-robin's true P"), "{grid}");
+    assert!(grid.contains("priority-only@1deg"), "{grid}");
+    let (_, rows) = parse_csv(
+        &out.join("grid").join("open_loop_summary.csv"),
+        &["condition", "budget", "scheduler"],
+    );
+    assert!(rows.iter().any(|r| r[0] == "150"), "{rows:?}");
     let _ = std::fs::remove_dir_all(&out);
 }
 

@@ -82,14 +82,27 @@ pub fn truths(
 
 /// The fractional-knapsack bound: the least true P left by any schedule of `budget` sphere tests,
 /// given each pair's (true weight, cost). `items` is reordered.
-pub fn bound(items: &mut [(f64, u32)], budget: u64) -> f64 {
+pub fn bound(items: &mut Vec<(f64, u32)>, budget: u64) -> f64 {
+    sort_for_bound(items);
+    bound_sorted(items, budget)
+}
+
+/// Order `items` (true weight, cost) for [`bound_sorted`]: best weight per test first. Pairs of
+/// weight 0 (truly colliding) are dropped: they come last and leave nothing whatever the budget.
+/// Sorting once serves every budget of a frame.
+pub fn sort_for_bound(items: &mut Vec<(f64, u32)>) {
+    items.retain(|&(w, _)| w > 0.0);
     items.sort_unstable_by(|x, y| {
         let (rx, ry) = (x.0 / f64::from(x.1.max(1)), y.0 / f64::from(y.1.max(1)));
         ry.total_cmp(&rx)
     });
+}
+
+/// [`bound`] on items already ordered by [`sort_for_bound`].
+pub fn bound_sorted(items: &[(f64, u32)], budget: u64) -> f64 {
     let mut left = budget as f64;
     let mut remaining = 0.0;
-    for &(w, c) in items.iter() {
+    for &(w, c) in items {
         let c = f64::from(c.max(1));
         if left >= c {
             left -= c;
@@ -114,5 +127,9 @@ mod tests {
         assert_eq!(bound(&mut items, 3), 2.0 + 1.0);
         assert_eq!(bound(&mut items, 0), 14.0);
         assert_eq!(bound(&mut items, 100), 0.0);
+        // A truly colliding pair (weight 0) leaves nothing and takes no budget from the others.
+        let mut items = vec![(0.0, 1), (2.0, 4), (10.0, 2), (2.0, 2)];
+        assert_eq!(bound(&mut items, 3), 2.0 + 1.0);
+        assert_eq!(items.len(), 3);
     }
 }
