@@ -116,23 +116,36 @@ impl Inner {
     /// newest live source with a point to steer by, else the newest live one, else the one heard
     /// from last.
     fn steering<'a>(&'a self, now_s: f64, max_age_s: f64) -> Option<(&'a Source, GazeState)> {
-        let mut live: Vec<&'a Source> = self
+        // One scan, no allocation (this runs every frame): the state is asked only of a live
+        // source newer than the best one with a point so far; among equally new sources the
+        // first registered wins.
+        let mut steering: Option<(&'a Source, GazeState)> = None;
+        let mut newest: Option<&'a Source> = None;
+        for s in self
             .sources
             .iter()
             .filter(|s| now_s - s.last_received_s <= max_age_s)
-            .collect();
-        live.sort_by(|a, b| b.first_received_s.total_cmp(&a.first_received_s));
+        {
+            if newest.is_none_or(|n| s.first_received_s > n.first_received_s) {
+                newest = Some(s);
+            }
+            if steering
+                .as_ref()
+                .is_none_or(|(n, _)| s.first_received_s > n.first_received_s)
+            {
+                let st = s.processor.state(now_s);
+                if st.steer.is_some() {
+                    steering = Some((s, st));
+                }
+            }
+        }
         let with_state = |s: &'a Source| (s, s.processor.state(now_s));
-        live.iter()
-            .map(|&s| with_state(s))
-            .find(|(_, st)| st.steer.is_some())
-            .or_else(|| live.first().map(|&s| with_state(s)))
-            .or_else(|| {
-                self.sources
-                    .iter()
-                    .max_by(|a, b| a.last_received_s.total_cmp(&b.last_received_s))
-                    .map(with_state)
-            })
+        steering.or_else(|| newest.map(with_state)).or_else(|| {
+            self.sources
+                .iter()
+                .max_by(|a, b| a.last_received_s.total_cmp(&b.last_received_s))
+                .map(with_state)
+        })
     }
 }
 

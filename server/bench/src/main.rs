@@ -132,6 +132,10 @@ struct SessionOptions {
     /// Only the closed-loop replay.
     #[arg(long)]
     replay_only: bool,
+    /// Open loop on at most this many frames of each recorded scene (the closed-loop replay
+    /// still checks every frame): the open loop runs every scheduler at every budget per frame.
+    #[arg(long = "session-frames")]
+    session_frames: Option<u32>,
     /// Write the report (markdown) here as well as to stdout.
     #[arg(long = "session-report")]
     session_report: Option<PathBuf>,
@@ -156,6 +160,7 @@ fn replay(file: &std::path::Path, options: &SessionOptions) -> Result<()> {
     let cfg = session::SessionConfig {
         fractions: options.session_fractions.clone(),
         open_loop: !options.replay_only,
+        open_loop_frames: options.session_frames,
     };
     let out = session::run(&s, &cfg).context("replaying the session failed")?;
     print!("{}", out.markdown);

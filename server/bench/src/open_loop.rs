@@ -858,15 +858,17 @@ pub fn run_parts(parts: &[&OpenLoopConfig]) -> Result<Vec<Vec<RunResult>>, Bench
         .iter()
         .flat_map(|&n| cfg.seeds.iter().map(move |&s| (n, s)))
         .collect();
+    // Largest N first, so the short runs fill in behind the long ones on the other threads.
+    let mut order: Vec<usize> = (0..plan.len()).collect();
+    order.sort_by_key(|&k| std::cmp::Reverse(plan[k].0));
     let next = AtomicUsize::new(0);
     type Slot = (usize, Result<Vec<RunResult>, BenchError>);
     let results: Mutex<Vec<Slot>> = Mutex::new(Vec::new());
     std::thread::scope(|scope| {
         for _ in 0..cfg.jobs.clamp(1, plan.len().max(1)) {
             scope.spawn(|| {
-                loop {
-                    let k = next.fetch_add(1, Ordering::Relaxed);
-                    let Some(&(n, seed)) = plan.get(k) else { break };
+                while let Some(&k) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
+                    let (n, seed) = plan[k];
                     let r = run_one_parts(parts, n, seed);
                     if let Ok(mut v) = results.lock() {
                         v.push((k, r));
@@ -1118,10 +1120,14 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
         let tests = MeanCi::of(rs.iter().map(|r| r.exact_tests));
         let _ = writeln!(
             s,
-            "### N = {n} ({} seeds x {} frames; exact narrow phase {} ms, {} sphere tests per frame)\n",
+            "### N = {n} ({} seeds x {} frames; exact narrow phase {}, {} sphere tests per frame)\n",
             rs.len(),
             cfg.frames_for(n),
-            narrow.fmt(3),
+            if cfg.timing_frames == 0 {
+                "not timed".to_string()
+            } else {
+                format!("{} ms", narrow.fmt(3))
+            },
             tests.fmt(3)
         );
         for (ci, cond) in cfg.conditions.iter().enumerate() {

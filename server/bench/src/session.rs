@@ -25,6 +25,9 @@ pub struct SessionConfig {
     pub fractions: Vec<f64>,
     /// Run the open-loop comparison (the closed-loop replay always runs).
     pub open_loop: bool,
+    /// At most this many frames of each scene in the open loop, from the scene's first (None:
+    /// all). The closed-loop replay always checks every frame.
+    pub open_loop_frames: Option<u32>,
 }
 
 impl Default for SessionConfig {
@@ -32,6 +35,7 @@ impl Default for SessionConfig {
         Self {
             fractions: vec![0.01, 0.03, 0.1, 0.3],
             open_loop: true,
+            open_loop_frames: None,
         }
     }
 }
@@ -125,7 +129,7 @@ pub fn run(session: &Session, cfg: &SessionConfig) -> Result<SessionReport, Benc
             "\n### Schedulers on identical frames, the recorded gaze\n"
         );
         for (i, seg) in segments(session).iter().enumerate() {
-            md.push_str(&open_loop_segment(i, seg, &cfg.fractions)?);
+            md.push_str(&open_loop_segment(i, seg, cfg)?);
         }
     }
     Ok(SessionReport {
@@ -169,7 +173,12 @@ pub fn replay_verdict(r: &ReplayOutcome) -> String {
 }
 
 /// The open-loop tables of one scene.
-fn open_loop_segment(i: usize, seg: &Segment<'_>, fractions: &[f64]) -> Result<String, BenchError> {
+fn open_loop_segment(
+    i: usize,
+    seg: &Segment<'_>,
+    session: &SessionConfig,
+) -> Result<String, BenchError> {
+    let fractions = &session.fractions;
     let c = &seg.config;
     let mut budgets: Vec<Budget> = Vec::new();
     let mut note = String::new();
@@ -192,7 +201,17 @@ fn open_loop_segment(i: usize, seg: &Segment<'_>, fractions: &[f64]) -> Result<S
     }
     budgets.extend(fractions.iter().map(|&f| Budget::Tests(f)));
     let n = c.scene.bodies;
-    let frames = u32::try_from(seg.frames.len()).unwrap_or(u32::MAX);
+    let recorded = u32::try_from(seg.frames.len()).unwrap_or(u32::MAX);
+    let frames = session
+        .open_loop_frames
+        .map_or(recorded, |cap| cap.min(recorded));
+    if frames < recorded {
+        let _ = writeln!(
+            note,
+            "The open loop runs the first {frames} of the scene's {recorded} recorded frames \
+             (`--session-frames`).\n"
+        );
+    }
     let all: Vec<SchedulerSpec> = SchedulerKind::ALL
         .into_iter()
         .map(SchedulerSpec::plain)
@@ -346,6 +365,7 @@ mod tests {
         let cfg = SessionConfig {
             fractions: vec![0.1],
             open_loop: true,
+            open_loop_frames: None,
         };
         let out = run(&s, &cfg).expect("runs");
         assert!(out.replay.is_bit_for_bit(), "{:?}", out.replay);
@@ -368,6 +388,28 @@ mod tests {
     }
 
     #[test]
+    fn the_open_loop_frame_cap_shortens_each_scene_but_not_the_replay() {
+        let s = session();
+        let cfg = SessionConfig {
+            fractions: vec![0.1],
+            open_loop: true,
+            open_loop_frames: Some(12),
+        };
+        let out = run(&s, &cfg).expect("runs");
+        assert_eq!(out.replay.frames, 50);
+        let md = &out.markdown;
+        assert!(
+            md.contains("Scene 0: N = 150, 12 frames")
+                && md.contains("Scene 1: N = 120, 12 frames"),
+            "{md}"
+        );
+        assert!(
+            md.contains("the first 12 of the scene's 30 recorded frames"),
+            "{md}"
+        );
+    }
+
+    #[test]
     fn a_changed_metric_is_reported_with_its_frame() {
         let mut s = session();
         s.frames[35].report.deemed += 1;
@@ -376,6 +418,7 @@ mod tests {
             &SessionConfig {
                 fractions: vec![],
                 open_loop: false,
+                open_loop_frames: None,
             },
         )
         .expect("runs");
