@@ -10,6 +10,10 @@
 //! - `measure/{settled,deemed}/100000`: the metrics pass (counts, the fovea count over every
 //!   candidate pair, Δ and P over the deemed ones, sampled beyond 25,000) of one frame at
 //!   N = 100,000 with a fixation, every pair settled exactly or every pair deemed.
+//! - `ordering/{round-robin,priced}/{500,10000}`: what a scheduler spends before its first sphere
+//!   test (the pair list, the body pass, pricing), timed as a frame under a budget of 0 sphere
+//!   tests with a fixation; per candidate pair in the throughput line. Under a wall-clock budget
+//!   this is paid from the same time as the tests.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -166,5 +170,44 @@ fn measure(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, frame, broad, narrow, measure);
+fn ordering(c: &mut Criterion) {
+    use foveal_engine::collider::Collider;
+    use foveal_engine::{FrameBudget, FrameReport, PhaseProfile};
+    let mut g = c.benchmark_group("ordering");
+    g.measurement_time(Duration::from_secs(4));
+    let fixation = Some(foveal_engine::Fixation::at(0.4, 0.5));
+    for n in [500u32, 10_000] {
+        let mut sim = Simulation::new(exact(n)).expect("valid");
+        for _ in 0..60 {
+            sim.step(None, &FrozenClock);
+        }
+        for kind in [SchedulerKind::RoundRobin, SchedulerKind::Priced] {
+            let cfg = SimConfig {
+                scheduler: kind,
+                ..exact(n)
+            };
+            let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+            let input = sim.frame_input();
+            let mut r = FrameReport::default();
+            let mut p = PhaseProfile::default();
+            g.throughput(Throughput::Elements(input.candidates.len() as u64));
+            g.bench_function(BenchmarkId::new(kind.name(), n), |b| {
+                b.iter(|| {
+                    col.collide(
+                        &input,
+                        fixation,
+                        FrameBudget::Tests(0),
+                        &FrozenClock,
+                        &mut r,
+                        &mut p,
+                    );
+                    black_box(r.deemed)
+                })
+            });
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, frame, broad, narrow, measure, ordering);
 criterion_main!(benches);

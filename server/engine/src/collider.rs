@@ -48,12 +48,18 @@ pub struct Collider {
     fallback: Box<dyn Scheduler>,
     /// Measured cost of prioritising and ordering, ns per candidate pair (moving average).
     ordering_ns_per_pair: Option<f64>,
+    /// Wall-clock frames shed in a row since the ordering was last measured.
+    shed_streak: u32,
 }
 
 /// A wall-clock frame orders its work only if the expected cost of ordering is at most this
 /// share of the time left: below it, gaze-blind round-robin does more good with the same time
 /// (measured open loop: ordering 1,166 pairs at N = 500 costs about as much as 1,000 root tests).
 const ORDERING_SHARE: f64 = 0.25;
+
+/// After this many wall-clock frames in a row shed, the next one orders and measures the cost
+/// again.
+const PROBE_EVERY: u32 = 32;
 
 impl Collider {
     /// A collider for `config` (its scheduler, models, threshold and audit switch; the budget is
@@ -87,6 +93,7 @@ impl Collider {
                 schedule::PricedOptions::default(),
             ),
             ordering_ns_per_pair: None,
+            shed_streak: 0,
             config: config.clone(),
         })
     }
@@ -154,12 +161,19 @@ impl Collider {
         let n = self.narrow.pairs.len();
         // Under a wall-clock budget too small to pay for ordering the pairs, ordering them would
         // leave less time for the tests than it is worth: shed it, run round-robin, and say so.
+        // The cost is learnt from frames that ordered; one slow frame (a cold cache, the first
+        // frame's allocations, a preemption) must not shed the ordering for good, so every
+        // PROBE_EVERY-th frame in a row that would shed orders anyway and measures again.
         let affordable = match self.ordering_ns_per_pair {
-            Some(per_pair) => meter
-                .wall_left_ns()
-                .is_none_or(|left| per_pair * n as f64 <= ORDERING_SHARE * left as f64),
+            Some(per_pair) => {
+                meter
+                    .wall_left_ns()
+                    .is_none_or(|left| per_pair * n as f64 <= ORDERING_SHARE * left as f64)
+                    || self.shed_streak >= PROBE_EVERY
+            }
             None => true,
         };
+        self.shed_streak = if affordable { 0 } else { self.shed_streak + 1 };
         let prioritised = affordable && self.prioritises(fixation_px.is_some());
         r.ordering_shed = !affordable;
         let uncertainty_deg = fixation.map_or(0.0, |f| f.clamped().uncertainty_deg);
@@ -191,9 +205,19 @@ impl Collider {
         };
         if affordable {
             self.scheduler.run(&mut self.narrow, &work, &mut meter);
-            if matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_)) && n > 0 {
+            // A prioritisation the deadline cut short measured only part of its cost.
+            let complete = !prioritised
+                || (self.priorities.bodies_done
+                    && (self.priorities.reached == n
+                        || schedule::needs(self.config.scheduler).bodies_only));
+            if matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_))
+                && n > 0
+                && complete
+            {
                 let cost = (t1 - t0 + self.scheduler.ordering_ns()) as f64 / n as f64;
+                // Quick to fall, slow to rise: slow outliers are common, fast ones are not.
                 self.ordering_ns_per_pair = Some(match self.ordering_ns_per_pair {
+                    Some(old) if cost < old => cost,
                     Some(old) => 0.8 * old + 0.2 * cost,
                     None => cost,
                 });
@@ -336,4 +360,66 @@ pub fn true_weight(
         v.weight_points(gap_a, gap_b, (gap_a + gap_b) * 0.5)
     });
     Some((sep, w))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{BudgetSpec, FrozenClock, SchedulerKind, Simulation};
+    use std::cell::Cell;
+
+    /// A clock that advances 1 µs at every read: the ordering, a handful of reads, costs far more
+    /// than a 10 µs frame can pay.
+    struct Ticking(Cell<u64>);
+    impl Clock for Ticking {
+        fn now_ns(&self) -> u64 {
+            self.0.set(self.0.get() + 1_000);
+            self.0.get()
+        }
+    }
+
+    #[test]
+    fn an_unaffordable_ordering_is_shed_and_measured_again_every_probe() {
+        let mut cfg = SimConfig::default();
+        cfg.scene.bodies = 200;
+        cfg.budget = BudgetSpec::Exact;
+        cfg.scheduler = SchedulerKind::Priced;
+        let mut sim = Simulation::new(cfg.clone()).expect("valid");
+        for _ in 0..5 {
+            sim.step(None, &FrozenClock);
+        }
+        let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+        let clock = Ticking(Cell::new(0));
+        let fixation = Some(Fixation::at(0.5, 0.5));
+        let shed: Vec<bool> = (0..2 * (PROBE_EVERY + 1) + 1)
+            .map(|_| {
+                col.evaluate(
+                    &sim.frame_input(),
+                    fixation,
+                    FrameBudget::Wall(10_000),
+                    &clock,
+                )
+                .ordering_shed
+            })
+            .collect();
+        // Frame 0 orders (nothing measured yet) and learns the cost; then PROBE_EVERY frames
+        // shed, one orders to measure again, and so on.
+        let mut want = vec![false];
+        for _ in 0..2 {
+            want.extend(std::iter::repeat_n(true, PROBE_EVERY as usize));
+            want.push(false);
+        }
+        assert_eq!(shed, want);
+        // A budget that pays for the ordering never sheds it.
+        let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+        for _ in 0..5 {
+            let r = col.evaluate(
+                &sim.frame_input(),
+                fixation,
+                FrameBudget::Wall(1 << 40),
+                &clock,
+            );
+            assert!(!r.ordering_shed);
+        }
+    }
 }

@@ -104,31 +104,54 @@ const SQUARED_STEPS: usize = 1024;
 /// 0.125 wide in distance); the edge's side is then decided by one comparison.
 #[inline]
 pub fn dist_bucket_of_squared(d2: f32) -> u8 {
-    const RANGE2: f32 = DIST_RANGE * DIST_RANGE;
-    let k = ((d2.max(0.0) * (SQUARED_STEPS as f32 / RANGE2)) as usize).min(SQUARED_STEPS - 1);
-    let lo = squared_table()[k];
-    // The next bucket starts inside this step if its edge squared is <= d2.
-    let next = lo as usize + 1;
-    if next < DIST_BUCKETS {
-        let edge = next as f32 * (DIST_RANGE / DIST_BUCKETS as f32);
-        if d2 >= edge * edge {
-            return next as u8;
-        }
-    }
-    lo
+    squared_table().bucket(d2)
 }
 
-/// Bucket of the low end of each squared step.
-fn squared_table() -> &'static [u8; SQUARED_STEPS] {
-    static TABLE: std::sync::OnceLock<[u8; SQUARED_STEPS]> = std::sync::OnceLock::new();
-    TABLE.get_or_init(|| {
-        let mut t = [0u8; SQUARED_STEPS];
-        for (k, v) in t.iter_mut().enumerate() {
+/// The tables of [`dist_bucket_of_squared`], for loops that keep their own copy (no lazy
+/// initialisation check per call) and want it branch-free.
+#[derive(Debug, Clone)]
+pub struct SquaredBuckets {
+    /// Bucket of the low end of each squared step.
+    low: [u8; SQUARED_STEPS],
+    /// Squared lower edge of each bucket after the first (+inf past the last bucket).
+    next_edge2: [f32; DIST_BUCKETS + 1],
+}
+
+impl Default for SquaredBuckets {
+    fn default() -> Self {
+        squared_table().clone()
+    }
+}
+
+impl SquaredBuckets {
+    fn new() -> Self {
+        let mut low = [0u8; SQUARED_STEPS];
+        for (k, v) in low.iter_mut().enumerate() {
             let d2 = k as f32 * (DIST_RANGE * DIST_RANGE / SQUARED_STEPS as f32);
             *v = dist_bucket(d2.sqrt());
         }
-        t
-    })
+        let mut next_edge2 = [f32::INFINITY; DIST_BUCKETS + 1];
+        for (lo, e) in next_edge2.iter_mut().enumerate().take(DIST_BUCKETS - 1) {
+            let edge = (lo + 1) as f32 * (DIST_RANGE / DIST_BUCKETS as f32);
+            *e = edge * edge;
+        }
+        Self { low, next_edge2 }
+    }
+
+    /// The bucket of squared distance `d2` (see [`dist_bucket_of_squared`]).
+    #[inline]
+    pub fn bucket(&self, d2: f32) -> u8 {
+        const RANGE2: f32 = DIST_RANGE * DIST_RANGE;
+        let k = ((d2.max(0.0) * (SQUARED_STEPS as f32 / RANGE2)) as usize).min(SQUARED_STEPS - 1);
+        let lo = self.low[k];
+        // The next bucket starts inside this step if its edge squared is <= d2.
+        lo + u8::from(d2 >= self.next_edge2[lo as usize])
+    }
+}
+
+fn squared_table() -> &'static SquaredBuckets {
+    static TABLE: std::sync::OnceLock<SquaredBuckets> = std::sync::OnceLock::new();
+    TABLE.get_or_init(SquaredBuckets::new)
 }
 
 /// Bin index of a state.
@@ -218,6 +241,13 @@ impl Calibration {
     pub fn index_of(&self, np: &NarrowPhase, i: usize, bucket: u8) -> usize {
         let stage = np.pairs[i].stage().min(stages(self.depth) as u8 - 1);
         index_bucket(stage, list_key(np, i), bucket)
+    }
+
+    /// Bin index of an untested pair (stage 0) in distance bucket `bucket`, with or without a
+    /// witness from last frame: what [`Self::index_of`] answers for every pair at a frame's start.
+    #[inline]
+    pub fn initial_index(&self, witness: bool, bucket: u8) -> usize {
+        index_bucket(0, LENGTH_BUCKETS * usize::from(witness), bucket)
     }
 
     /// The table as Rust source for `schedule/calibration_table.rs`.

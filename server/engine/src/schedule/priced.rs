@@ -14,7 +14,10 @@
 //! The queue is a bucketed max-queue on the bits of the f32 value (quarter octaves): push and pop
 //! are a few instructions, not a heap's log n comparisons, because under wall-clock budgets this
 //! bookkeeping is paid from the same budget as the sphere tests. Within a bucket the order is last
-//! in, first out; values within a quarter octave are treated as equal.
+//! in, first out; values within a quarter octave are treated as equal. The frame's first prices
+//! (every pair untested) are not pushed one by one: they are counting-sorted into one array in a
+//! pass that only writes sequential arrays, and the queue holds only pairs put back after a step;
+//! popping takes whichever of the two is higher, so the order is exactly the queue's.
 
 use serde::{Deserialize, Serialize};
 
@@ -157,11 +160,63 @@ impl BucketQueue {
     }
 }
 
+/// The frame's first prices, counting-sorted: bucket descending, and within a bucket the later
+/// entry first (the order a [`BucketQueue`] fed the same entries in turn pops them).
+#[derive(Debug, Clone, Default)]
+struct Initial {
+    /// Priced entries (pair, bucket key) in the order they were priced.
+    items: Vec<(u32, u16)>,
+    /// Entries per bucket, then where each bucket's run starts in `order`.
+    counts: Vec<u32>,
+    /// Entries in pop order.
+    order: Vec<(u32, u16)>,
+    /// Next entry of `order` to pop.
+    next: usize,
+}
+
+impl Initial {
+    fn clear(&mut self) {
+        self.items.clear();
+        self.counts.clear();
+        self.counts.resize(BUCKETS, 0);
+        self.order.clear();
+        self.next = 0;
+    }
+
+    /// Key of the next entry (0 when drained, like an empty queue).
+    #[inline]
+    fn top_key(&self) -> usize {
+        self.order.get(self.next).map_or(0, |&(_, k)| k as usize)
+    }
+
+    /// Sort `items` into `order` (replacing what is left of it) and start popping from the top.
+    fn sort(&mut self) {
+        // Exclusive prefix from the top bucket down: a bucket's run starts after every higher one.
+        let mut at = 0u32;
+        for c in self.counts.iter_mut().rev() {
+            let k = *c;
+            *c = at;
+            at += k;
+        }
+        self.order.clear();
+        self.order.resize(self.items.len(), (0, 0));
+        for &(i, k) in self.items.iter().rev() {
+            let slot = &mut self.counts[k as usize];
+            self.order[*slot as usize] = (i, k);
+            *slot += 1;
+        }
+        self.counts.iter_mut().for_each(|c| *c = 0);
+        self.items.clear();
+        self.next = 0;
+    }
+}
+
 /// The priced scheduler.
 #[derive(Debug, Default)]
 pub struct Priced {
     options: PricedOptions,
     queue: BucketQueue,
+    initial: Initial,
     /// Per pair: fall-off times scale, the state-independent part of its value.
     weight: Vec<f32>,
     /// Per pair: its centre-distance bucket.
@@ -170,6 +225,8 @@ pub struct Priced {
     ratio: Vec<f32>,
     /// Clock time of the last run's pricing pass.
     ordering_ns: u64,
+    /// Distance buckets from squared distances.
+    buckets: calibration::SquaredBuckets,
 }
 
 impl Priced {
@@ -191,6 +248,60 @@ impl Priced {
         let price = if self.options.cost { bin.cost } else { 1.0 };
         weight * gain / price
     }
+
+    /// Price every (untested) pair into the initial stream. The weight at a pair is the mean of its two bodies' (a few degrees apart at most), and the
+    /// squared centre distance keys the calibrated state: one pass writing sequential arrays and
+    /// a histogram, without a per-pair projection, division, square root or queue push.
+    fn price(&mut self, np: &NarrowPhase, work: &Work<'_>) {
+        let pr = work.priorities;
+        let cal = work.calibration;
+        let gaze = self.options.gaze && work.view.is_some();
+        let inv_d2 = (0.25 / (work.tree.root_radius() * work.tree.root_radius())) as f32;
+        let records = pr.body_records();
+        // Every pair is untested: its value per unit weight depends only on its distance bucket
+        // and whether it has a witness from last frame.
+        let mut first = [[0f32; calibration::DIST_BUCKETS]; 2];
+        for (w, row) in first.iter_mut().enumerate() {
+            for (d, r) in row.iter_mut().enumerate() {
+                *r = self.ratio[cal.initial_index(w == 1, d as u8)];
+            }
+        }
+        let table = &self.buckets;
+        let init = &mut self.initial;
+        let counts = &mut init.counts[..BUCKETS];
+        let full = records.len() == work.world.len();
+        for (i, (p, (w_out, d_out))) in np
+            .pairs
+            .iter()
+            .zip(self.weight.iter_mut().zip(self.dist.iter_mut()))
+            .enumerate()
+        {
+            let (a, b) = (p.a as usize, p.b as usize);
+            let (w, d2) = if full {
+                let (ra, rb) = (records[a], records[b]);
+                let w = if gaze {
+                    0.5 * (ra[3] + rb[3])
+                } else {
+                    0.5 * (pr.body_scale(a) + pr.body_scale(b))
+                };
+                let d = [rb[0] - ra[0], rb[1] - ra[1], rb[2] - ra[2]];
+                (w, (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * inv_d2)
+            } else {
+                // No body pass (a deadline cut it short): distances from the world, no weight.
+                let d = work.world.position[b] - work.world.position[a];
+                (1.0, d.length_squared() as f32 * inv_d2)
+            };
+            let bucket = table.bucket(d2);
+            *w_out = w;
+            *d_out = bucket;
+            let ratio =
+                first[usize::from(np.has_witness(i))][bucket as usize % calibration::DIST_BUCKETS];
+            let key = BucketQueue::key(w * ratio);
+            init.items.push((i as u32, key as u16));
+            counts[key] += 1;
+        }
+        init.sort();
+    }
 }
 
 impl Scheduler for Priced {
@@ -203,47 +314,33 @@ impl Scheduler for Priced {
     }
 
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
-        let pr = work.priorities;
         let cal = work.calibration;
         let started = meter.now_ns();
         self.queue.clear();
+        self.initial.clear();
+        let n = np.pairs.len();
         self.weight.clear();
+        self.weight.resize(n, 0.0);
         self.dist.clear();
+        self.dist.resize(n, 0);
         if self.ratio.len() != cal.bins().len() {
             self.ratio = cal.bins().iter().map(|b| self.value(1.0, b)).collect();
         }
-        let gaze = self.options.gaze && work.view.is_some();
-        let inv_d2 = (0.25 / (work.tree.root_radius() * work.tree.root_radius())) as f32;
-        let records = pr.body_records();
-        // Price every pair from per-body records: the weight at the pair is the mean of its two
-        // bodies' (a few degrees apart at most), and the squared centre distance keys the
-        // calibrated state. One pass, no per-pair projection, division or square root.
-        for i in 0..np.pairs.len() {
-            let (a, b) = (np.pairs[i].a as usize, np.pairs[i].b as usize);
-            let (w, d2) = match (records.get(a), records.get(b)) {
-                (Some(ra), Some(rb)) => {
-                    let d = [rb[0] - ra[0], rb[1] - ra[1], rb[2] - ra[2]];
-                    let w = if gaze {
-                        0.5 * (ra[3] + rb[3])
-                    } else {
-                        0.5 * (pr.body_scale(a) + pr.body_scale(b))
-                    };
-                    (w, (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * inv_d2)
-                }
-                // No body pass (a deadline cut it short): distances from the world, no weight.
-                _ => {
-                    let d = work.world.position[b] - work.world.position[a];
-                    (1.0, d.length_squared() as f32 * inv_d2)
-                }
-            };
-            let bucket = calibration::dist_bucket_of_squared(d2);
-            self.weight.push(w);
-            self.dist.push(bucket);
-            let k = cal.index_of(np, i, bucket);
-            self.queue.push(w * self.ratio[k], i as u32);
-        }
+        debug_assert!(np.pairs.iter().all(|p| p.stage() == 0));
+        self.price(np, work);
         self.ordering_ns = meter.now_ns().saturating_sub(started);
-        while let Some(pair) = self.queue.pop() {
+        loop {
+            // The higher of the sorted first prices and the pairs put back; on a tie the put-back
+            // pair, as the queue's last-in-first-out would.
+            let pair = if self.queue.len > 0 && self.queue.top_key() >= self.initial.top_key() {
+                self.queue.pop()
+            } else if let Some(&(p, _)) = self.initial.order.get(self.initial.next) {
+                self.initial.next += 1;
+                Some(p)
+            } else {
+                None
+            };
+            let Some(pair) = pair else { break };
             let i = pair as usize;
             // Work on the pair while it stays within COMMIT_BUCKETS of the best other one: a
             // descent abandoned half way is sphere tests spent for nothing, and re-pricing after
@@ -257,7 +354,8 @@ impl Scheduler for Priced {
                 }
                 let k = cal.index_of(np, i, self.dist[i]);
                 let v = self.weight[i] * self.ratio[k];
-                if BucketQueue::key(v) + COMMIT_BUCKETS < self.queue.top_key() {
+                let top = self.queue.top_key().max(self.initial.top_key());
+                if BucketQueue::key(v) + COMMIT_BUCKETS < top {
                     self.queue.push(v, pair);
                     break;
                 }
@@ -287,6 +385,33 @@ mod tests {
         q.push(1.0, 9);
         q.clear();
         assert_eq!(q.pop(), None);
+    }
+
+    #[test]
+    fn the_sorted_first_prices_pop_like_the_queue() {
+        // Values spread over many buckets, with ties, fed in index order to both.
+        let values: Vec<f32> = (0..500u32)
+            .map(|i| ((i * 7919) % 97) as f32 * 0.37 + if i % 5 == 0 { 0.0 } else { 1e-3 })
+            .collect();
+        let mut q = BucketQueue::default();
+        let mut init = Initial::default();
+        init.clear();
+        for (i, &v) in values.iter().enumerate() {
+            q.push(v, i as u32);
+            let k = BucketQueue::key(v);
+            init.items.push((i as u32, k as u16));
+            init.counts[k] += 1;
+        }
+        init.sort();
+        let from_queue: Vec<u32> = std::iter::from_fn(|| q.pop()).collect();
+        let from_sort: Vec<u32> = init.order.iter().map(|&(i, _)| i).collect();
+        assert_eq!(from_sort, from_queue);
+        assert_eq!(
+            init.top_key(),
+            BucketQueue::key(values[from_queue[0] as usize])
+        );
+        init.next = init.order.len();
+        assert_eq!(init.top_key(), 0);
     }
 
     #[test]

@@ -37,7 +37,7 @@ pub struct Needs {
     pub inner: bool,
     /// The paper's weight F(g', e) on the untested evidence.
     pub weight: bool,
-    /// Per-body values only ([`Priorities::body_falloff`], [`Priorities::body_scale`]): the
+    /// Per-body values only ([`Priorities::body_records`], [`Priorities::body_scale`]): the
     /// scheduler prices pairs itself, so no per-pair pass is made here.
     pub bodies_only: bool,
 }
@@ -58,7 +58,8 @@ pub struct Priorities {
     /// Whether this frame's per-body values are complete.
     pub bodies_done: bool,
     body: Vec<BodyView>,
-    body_falloff: Vec<f32>,
+    /// Per body: the model's gap unit per scene unit.
+    body_scale: Vec<f32>,
     /// Per body, for schedulers that price pairs themselves: position relative to the volume's
     /// corner (f32: the volume is at most ~60 units wide) and scale times fall-off.
     body_record: Vec<[f32; 4]>,
@@ -69,16 +70,6 @@ impl Priorities {
     pub fn clear(&mut self) {
         self.reached = 0;
         self.bodies_done = false;
-    }
-
-    /// Eccentricity fall-off at body `b`'s centre (1 without a fixation or before the body pass).
-    #[inline]
-    pub fn body_falloff(&self, b: usize) -> f32 {
-        if self.bodies_done {
-            self.body_falloff[b]
-        } else {
-            1.0
-        }
     }
 
     /// Per-body records of the last body pass: position relative to the volume corner, and the
@@ -96,7 +87,7 @@ impl Priorities {
     #[inline]
     pub fn body_scale(&self, b: usize) -> f32 {
         if self.bodies_done {
-            self.body[b].scale
+            self.body_scale[b]
         } else {
             1.0
         }
@@ -274,35 +265,40 @@ impl Prioritiser {
             };
             (view, r)
         });
+        if self.needs.bodies_only {
+            // One pass writing only the records the pricing reads: under a wall-clock budget
+            // this is paid from the frame's time, and touching fewer arrays is most of its cost.
+            let lo = world.lo;
+            out.body_record.clear();
+            out.body_scale.clear();
+            let (records, scales) = (&mut out.body_record, &mut out.body_scale);
+            // In blocks: first the projection of every body of the block (straight-line
+            // arithmetic the compiler can vectorise), then the table lookups.
+            const BLOCK: usize = 64;
+            let mut arg = [0f32; BLOCK];
+            let mut scale = [0f32; BLOCK];
+            for block in world.position.chunks(BLOCK) {
+                for ((p, a), sc) in block.iter().zip(arg.iter_mut()).zip(scale.iter_mut()) {
+                    let v = self.body_view(*p);
+                    *a = fix.as_ref().map_or(0.0, |(f, _)| self.arg(&v, f));
+                    *sc = v.scale;
+                }
+                for ((p, a), sc) in block.iter().zip(&arg).zip(&scale) {
+                    let f = if fix.is_some() { factor(*a) } else { 1.0 };
+                    let r = (*p - lo).as_vec3();
+                    records.push([r.x, r.y, r.z, sc * f]);
+                    scales.push(*sc);
+                }
+            }
+            out.bodies_done = true;
+            return;
+        }
         out.body.clear();
         out.body
             .extend(world.position.iter().map(|&p| self.body_view(p)));
-        out.body_falloff.clear();
-        match &fix {
-            Some((f, _)) => {
-                let body_falloff = out.body.iter().map(|v| factor(self.arg(v, f)));
-                out.body_falloff.extend(body_falloff);
-            }
-            None => out.body_falloff.resize(out.body.len(), 1.0),
-        }
+        out.body_scale.clear();
+        out.body_scale.extend(out.body.iter().map(|v| v.scale));
         if meter.exhausted_by_clock() {
-            return;
-        }
-        if self.needs.bodies_only {
-            let lo = world.lo;
-            out.body_record.clear();
-            out.body_record.extend(
-                world
-                    .position
-                    .iter()
-                    .zip(&out.body)
-                    .zip(&out.body_falloff)
-                    .map(|((&p, v), &f)| {
-                        let r = (p - lo).as_vec3();
-                        [r.x, r.y, r.z, v.scale * f]
-                    }),
-            );
-            out.bodies_done = true;
             return;
         }
         out.bodies_done = true;
