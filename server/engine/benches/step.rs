@@ -10,10 +10,12 @@
 //! - `measure/{settled,deemed}/100000`: the metrics pass (counts, the fovea count over every
 //!   candidate pair, Δ and P over the deemed ones, sampled beyond 25,000) of one frame at
 //!   N = 100,000 with a fixation, every pair settled exactly or every pair deemed.
+//! - `ordering/body-pass/{500,10000}`: the priced scheduler's body pass alone, per body.
 //! - `ordering/{round-robin,priced}/{500,10000}`: what a scheduler spends before its first sphere
 //!   test (the pair list, the body pass, pricing), timed as a frame under a budget of 0 sphere
 //!   tests with a fixation; per candidate pair in the throughput line. Under a wall-clock budget
-//!   this is paid from the same time as the tests.
+//!   this is paid from the same time as the tests. `ordering/{round-robin,priced}-tests-0.1/..`:
+//!   the same frame with a tenth of its exact sphere tests (per sphere test in the throughput).
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -181,6 +183,39 @@ fn ordering(c: &mut Criterion) {
         for _ in 0..60 {
             sim.step(None, &FrozenClock);
         }
+        {
+            // The body pass alone (what the priced scheduler asks of prioritisation).
+            use foveal_engine::schedule::{self, Priorities, Prioritiser};
+            let cfg = exact(n);
+            let prioritiser = Prioritiser::new(
+                sim.viewer(),
+                &cfg.schedule_model,
+                cfg.eccentricity_threshold_deg,
+                sim.tree().root_radius(),
+                schedule::needs(SchedulerKind::Priced),
+            );
+            let mut out = Priorities::default();
+            let f = fixation.expect("given");
+            let px = sim.viewer().to_pixels(f.x, f.y);
+            let pairs = NarrowPhase::default();
+            g.throughput(Throughput::Elements(u64::from(n)));
+            g.bench_function(BenchmarkId::new("body-pass", n), |b| {
+                b.iter(|| {
+                    let mut meter =
+                        foveal_engine::budget::Meter::new(FrameBudget::Unlimited, &FrozenClock);
+                    prioritiser.prioritise(
+                        &pairs.pairs,
+                        sim.world(),
+                        sim.viewer(),
+                        Some((px, 0.0)),
+                        &mut out,
+                        &mut meter,
+                    );
+                    black_box(out.body_records().len())
+                })
+            });
+        }
+        let exact_tests = sim.last_report().sphere_tests;
         for kind in [SchedulerKind::RoundRobin, SchedulerKind::Priced] {
             let cfg = SimConfig {
                 scheduler: kind,
@@ -204,6 +239,18 @@ fn ordering(c: &mut Criterion) {
                     black_box(r.deemed)
                 })
             });
+            // The same frame with a tenth of its exact sphere tests: what the steps cost on top.
+            let tenth = FrameBudget::Tests(exact_tests / 10);
+            g.throughput(Throughput::Elements(exact_tests / 10));
+            g.bench_function(
+                BenchmarkId::new(format!("{}-tests-0.1", kind.name()), n),
+                |b| {
+                    b.iter(|| {
+                        col.collide(&input, fixation, tenth, &FrozenClock, &mut r, &mut p);
+                        black_box(r.deemed)
+                    })
+                },
+            );
         }
     }
     g.finish();

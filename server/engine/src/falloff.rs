@@ -137,7 +137,8 @@ impl Falloff {
 #[inline]
 fn lerp(table: &[f32], x: f32, inv_step: f32) -> f32 {
     let t = (x.max(0.0) * inv_step).min((KNOTS - 1) as f32);
-    let k = (t as usize).min(KNOTS - 2);
+    // t is in [0, KNOTS - 1]: converting through i32 is exact and cheaper than to usize.
+    let k = (t as i32 as usize).min(KNOTS - 2);
     let f = t - k as f32;
     table[k] + (table[k + 1] - table[k]) * f
 }

@@ -142,10 +142,13 @@ impl SquaredBuckets {
     #[inline]
     pub fn bucket(&self, d2: f32) -> u8 {
         const RANGE2: f32 = DIST_RANGE * DIST_RANGE;
-        let k = ((d2.max(0.0) * (SQUARED_STEPS as f32 / RANGE2)) as usize).min(SQUARED_STEPS - 1);
-        let lo = self.low[k];
+        // Clamped in f32 and converted through i32: the same step as converting to usize and
+        // clamping after, without the unsigned conversion's extra instructions.
+        let k = (d2.max(0.0) * (SQUARED_STEPS as f32 / RANGE2)).min((SQUARED_STEPS - 1) as f32)
+            as i32 as usize;
+        let lo = self.low[k % SQUARED_STEPS];
         // The next bucket starts inside this step if its edge squared is <= d2.
-        lo + u8::from(d2 >= self.next_edge2[lo as usize])
+        lo + u8::from(d2 >= self.next_edge2[lo as usize % (DIST_BUCKETS + 1)])
     }
 }
 

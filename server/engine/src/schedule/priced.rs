@@ -114,11 +114,9 @@ impl BucketQueue {
     #[inline]
     fn key(value: f32) -> usize {
         // Positive floats order like their bits; NaN, zero and negatives go to the bottom.
-        if value > 0.0 {
-            ((value.to_bits() >> 21) as usize).min(BUCKETS - 1)
-        } else {
-            0
-        }
+        // Branch-free: zero weights (far from the fixation) and positive ones mix unpredictably.
+        let k = ((value.to_bits() >> 21) as usize).min(BUCKETS - 1);
+        k & usize::from(value > 0.0).wrapping_neg()
     }
 
     #[inline]
@@ -160,27 +158,35 @@ impl BucketQueue {
     }
 }
 
-/// The frame's first prices, counting-sorted: bucket descending, and within a bucket the later
-/// entry first (the order a [`BucketQueue`] fed the same entries in turn pops them).
+/// The frame's first prices, counting-sorted: bucket descending, and within a bucket the higher
+/// pair index first (the order a [`BucketQueue`] fed the pairs in index order pops them).
 #[derive(Debug, Clone, Default)]
 struct Initial {
-    /// Priced entries (pair, bucket key) in the order they were priced.
-    items: Vec<(u32, u16)>,
-    /// Entries per bucket, then where each bucket's run starts in `order`.
+    /// Bucket key per pair.
+    keys: Vec<u16>,
+    /// Pairs per bucket of `span`, then where each bucket's run starts in `order`; zero between
+    /// sorts.
     counts: Vec<u32>,
-    /// Entries in pop order.
+    /// (pair, key) in pop order.
     order: Vec<(u32, u16)>,
     /// Next entry of `order` to pop.
     next: usize,
+    /// Least and greatest key counted (empty: least > greatest).
+    span: (usize, usize),
 }
 
 impl Initial {
-    fn clear(&mut self) {
-        self.items.clear();
-        self.counts.clear();
-        self.counts.resize(BUCKETS, 0);
+    /// Make room for `n` pairs' keys, every count zero.
+    fn clear(&mut self, n: usize) {
+        self.keys.clear();
+        self.keys.resize(n, 0);
+        if self.counts.len() != BUCKETS {
+            self.counts.clear();
+            self.counts.resize(BUCKETS, 0);
+        }
         self.order.clear();
         self.next = 0;
+        self.span = (BUCKETS, 0);
     }
 
     /// Key of the next entry (0 when drained, like an empty queue).
@@ -189,25 +195,29 @@ impl Initial {
         self.order.get(self.next).map_or(0, |&(_, k)| k as usize)
     }
 
-    /// Sort `items` into `order` (replacing what is left of it) and start popping from the top.
+    /// Sort the pairs by `keys` (counted in `counts` over `span`) into `order`.
     fn sort(&mut self) {
+        let (lo, hi) = self.span;
+        self.order.clear();
+        self.next = 0;
+        if lo > hi {
+            return;
+        }
+        let counts = &mut self.counts[lo..=hi];
         // Exclusive prefix from the top bucket down: a bucket's run starts after every higher one.
         let mut at = 0u32;
-        for c in self.counts.iter_mut().rev() {
+        for c in counts.iter_mut().rev() {
             let k = *c;
             *c = at;
             at += k;
         }
-        self.order.clear();
-        self.order.resize(self.items.len(), (0, 0));
-        for &(i, k) in self.items.iter().rev() {
-            let slot = &mut self.counts[k as usize];
-            self.order[*slot as usize] = (i, k);
+        self.order.resize(self.keys.len(), (0, 0));
+        for (i, &k) in self.keys.iter().enumerate().rev() {
+            let slot = &mut counts[k as usize - lo];
+            self.order[*slot as usize] = (i as u32, k);
             *slot += 1;
         }
-        self.counts.iter_mut().for_each(|c| *c = 0);
-        self.items.clear();
-        self.next = 0;
+        counts.iter_mut().for_each(|c| *c = 0);
     }
 }
 
@@ -268,14 +278,16 @@ impl Priced {
         }
         let table = &self.buckets;
         let init = &mut self.initial;
+        init.clear(np.pairs.len());
         let counts = &mut init.counts[..BUCKETS];
+        let (mut lo, mut hi) = (BUCKETS, 0);
         let full = records.len() == work.world.len();
-        for (i, (p, (w_out, d_out))) in np
-            .pairs
-            .iter()
-            .zip(self.weight.iter_mut().zip(self.dist.iter_mut()))
-            .enumerate()
-        {
+        let outs = self
+            .weight
+            .iter_mut()
+            .zip(self.dist.iter_mut())
+            .zip(init.keys.iter_mut());
+        for (i, (p, ((w_out, d_out), k_out))) in np.pairs.iter().zip(outs).enumerate() {
             let (a, b) = (p.a as usize, p.b as usize);
             let (w, d2) = if full {
                 let (ra, rb) = (records[a], records[b]);
@@ -294,12 +306,15 @@ impl Priced {
             let bucket = table.bucket(d2);
             *w_out = w;
             *d_out = bucket;
-            let ratio =
-                first[usize::from(np.has_witness(i))][bucket as usize % calibration::DIST_BUCKETS];
-            let key = BucketQueue::key(w * ratio);
-            init.items.push((i as u32, key as u16));
+            let witness = usize::from(np.has_witness(i));
+            let key =
+                BucketQueue::key(w * first[witness][bucket as usize % calibration::DIST_BUCKETS]);
+            *k_out = key as u16;
             counts[key] += 1;
+            lo = lo.min(key);
+            hi = hi.max(key);
         }
+        init.span = (lo, hi);
         init.sort();
     }
 }
@@ -317,7 +332,6 @@ impl Scheduler for Priced {
         let cal = work.calibration;
         let started = meter.now_ns();
         self.queue.clear();
-        self.initial.clear();
         let n = np.pairs.len();
         self.weight.clear();
         self.weight.resize(n, 0.0);
@@ -395,14 +409,17 @@ mod tests {
             .collect();
         let mut q = BucketQueue::default();
         let mut init = Initial::default();
-        init.clear();
+        init.clear(values.len());
         for (i, &v) in values.iter().enumerate() {
             q.push(v, i as u32);
             let k = BucketQueue::key(v);
-            init.items.push((i as u32, k as u16));
+            init.keys[i] = k as u16;
             init.counts[k] += 1;
+            init.span = (init.span.0.min(k), init.span.1.max(k));
         }
         init.sort();
+        // A second sort over the same pairs finds every count back at zero.
+        assert!(init.counts.iter().all(|&c| c == 0));
         let from_queue: Vec<u32> = std::iter::from_fn(|| q.pop()).collect();
         let from_sort: Vec<u32> = init.order.iter().map(|&(i, _)| i).collect();
         assert_eq!(from_sort, from_queue);

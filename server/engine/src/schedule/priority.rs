@@ -195,6 +195,25 @@ impl Prioritiser {
         BodyView { px, ray, scale }
     }
 
+    /// [`Self::body_view`]'s scale (degrees unit) and the chord of each body's eye ray to
+    /// `fix_ray`, for a block of bodies: the same operations in the same order, written over
+    /// plain arrays so that they vectorise.
+    fn project_block(&self, ps: &[Vec3], fix_ray: [f32; 3], arg: &mut [f32], scale: &mut [f32]) {
+        let (pitch, dist) = (self.pitch as f32, self.distance as f32);
+        let per_deg = pitch / dist;
+        for ((p, a), sc) in ps.iter().zip(arg.iter_mut()).zip(scale.iter_mut()) {
+            let (rx, ry, rz) = (p.x - self.eye.x, p.y - self.eye.y, p.z - self.eye.z);
+            let depth = (-rz).max(1e-9 * (1.0 + rx.abs() + ry.abs()));
+            let s = self.focal / depth;
+            let (dx, dy) = ((rx * s) as f32, (-ry * s) as f32);
+            let v = [dx * pitch, dy * pitch, dist];
+            let inv = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            let ray = [v[0] * inv, v[1] * inv, v[2] * inv];
+            *sc = s as f32 * per_deg * ray[2] * ray[2] * 57.295_78;
+            *a = chord(ray, fix_ray);
+        }
+    }
+
     /// The lookup argument between two screen points: the chord of their eye rays (degrees unit)
     /// or their pixel distance.
     #[inline]
@@ -271,23 +290,41 @@ impl Prioritiser {
             let lo = world.lo;
             out.body_record.clear();
             out.body_scale.clear();
+            out.body_record.resize(world.position.len(), [0.0; 4]);
+            out.body_scale.resize(world.position.len(), 0.0);
             let (records, scales) = (&mut out.body_record, &mut out.body_scale);
             // In blocks: first the projection of every body of the block (straight-line
-            // arithmetic the compiler can vectorise), then the table lookups.
+            // arithmetic over plain arrays, which the compiler vectorises), then the table
+            // lookups. The arithmetic is `body_view` and `arg`'s, operation for operation.
             const BLOCK: usize = 64;
             let mut arg = [0f32; BLOCK];
             let mut scale = [0f32; BLOCK];
-            for block in world.position.chunks(BLOCK) {
-                for ((p, a), sc) in block.iter().zip(arg.iter_mut()).zip(scale.iter_mut()) {
-                    let v = self.body_view(*p);
-                    *a = fix.as_ref().map_or(0.0, |(f, _)| self.arg(&v, f));
-                    *sc = v.scale;
+            let degrees = self.falloff.unit() == EccentricityUnit::Degrees;
+            for ((block, rec), scl) in world
+                .position
+                .chunks(BLOCK)
+                .zip(records.chunks_mut(BLOCK))
+                .zip(scales.chunks_mut(BLOCK))
+            {
+                let m = block.len();
+                match &fix {
+                    Some((f, _)) if degrees => {
+                        self.project_block(block, f.ray, &mut arg[..m], &mut scale[..m]);
+                    }
+                    _ => {
+                        for ((p, a), sc) in block.iter().zip(arg.iter_mut()).zip(scale.iter_mut()) {
+                            let v = self.body_view(*p);
+                            *a = fix.as_ref().map_or(0.0, |(f, _)| self.arg(&v, f));
+                            *sc = v.scale;
+                        }
+                    }
                 }
-                for ((p, a), sc) in block.iter().zip(&arg).zip(&scale) {
+                let lookups = block.iter().zip(&arg).zip(&scale).zip(rec).zip(scl);
+                for ((((p, a), sc), rec), scl) in lookups {
                     let f = if fix.is_some() { factor(*a) } else { 1.0 };
                     let r = (*p - lo).as_vec3();
-                    records.push([r.x, r.y, r.z, sc * f]);
-                    scales.push(*sc);
+                    *rec = [r.x, r.y, r.z, sc * f];
+                    *scl = *sc;
                 }
             }
             out.bodies_done = true;
