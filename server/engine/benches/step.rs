@@ -177,7 +177,8 @@ fn ordering(c: &mut Criterion) {
     use foveal_engine::{FrameBudget, FrameReport, PhaseProfile};
     let mut g = c.benchmark_group("ordering");
     g.measurement_time(Duration::from_secs(4));
-    let fixation = Some(foveal_engine::Fixation::at(0.4, 0.5));
+    let at = foveal_engine::Fixation::at(0.4, 0.5);
+    let fixation = Some(at);
     for n in [500u32, 10_000] {
         let mut sim = Simulation::new(exact(n)).expect("valid");
         for _ in 0..60 {
@@ -195,7 +196,7 @@ fn ordering(c: &mut Criterion) {
                 schedule::needs(SchedulerKind::Priced),
             );
             let mut out = Priorities::default();
-            let f = fixation.expect("given");
+            let f = at;
             let px = sim.viewer().to_pixels(f.x, f.y);
             let pairs = NarrowPhase::default();
             g.throughput(Throughput::Elements(u64::from(n)));
