@@ -27,6 +27,7 @@ use foveal_engine::clairvoyant::{self, PairTruth};
 use foveal_engine::collider::Collider;
 use foveal_engine::fixation::FrameView;
 use foveal_engine::schedule::PricedOptions;
+use foveal_engine::warm;
 use foveal_engine::{
     BudgetSpec, Clock, EccentricityUnit, Fixation, FrameBudget, FrameReport, FrozenClock,
     PerceptualFunction, PerceptualModel, PhaseProfile, SceneConfig, SchedulerKind, SimConfig,
@@ -739,6 +740,14 @@ pub fn run_frames_parts(
                 };
                 let mut r = FrameReport::default();
                 let mut prof = PhaseProfile::default();
+                if matches!(budget, Budget::Wall(_)) {
+                    // A server runs one collider, whose buffers and frame stay cached between
+                    // frames; here dozens take turns, so bring this one's back before timing it.
+                    run.collider.warm();
+                    warm::lines(&input.world.position);
+                    warm::lines(&input.world.basis);
+                    warm::lines(input.candidates);
+                }
                 run.collider
                     .collide(&input, Some(fed), fb, clk, &mut r, &mut prof);
                 run_tests[u] = r.sphere_tests;

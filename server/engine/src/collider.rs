@@ -50,16 +50,25 @@ pub struct Collider {
     ordering_ns_per_pair: Option<f64>,
     /// Wall-clock frames shed in a row since the ordering was last measured.
     shed_streak: u32,
+    /// Wall-clock frames whose ordering was measured.
+    measured: u32,
 }
 
 /// A wall-clock frame orders its work only if the expected cost of ordering is at most this
-/// share of the time left: below it, gaze-blind round-robin does more good with the same time
-/// (measured open loop: ordering 1,166 pairs at N = 500 costs about as much as 1,000 root tests).
-const ORDERING_SHARE: f64 = 0.25;
+/// share of the time left: above it, gaze-blind round-robin does more good with the same time.
+/// Measured open loop at N = 500 with the priced scheduler: ordering takes about a third of a
+/// frame whose budget is a third of the exact narrow phase, and there it halves round-robin's
+/// true P (C = 5) or better; at a tenth of the exact narrow phase it takes the whole budget.
+const ORDERING_SHARE: f64 = 0.5;
 
-/// After this many wall-clock frames in a row shed, the next one orders and measures the cost
-/// again.
-const PROBE_EVERY: u32 = 32;
+/// The first wall-clock frames order whatever the estimate says, so that the cost is learnt from
+/// several frames, not from the first one alone (cold caches, first allocations).
+const LEARN_FRAMES: u32 = 3;
+
+/// After this many wall-clock frames in a row shed (4 s at 60 Hz), the next one orders and
+/// measures the cost again: often enough to notice a faster machine or a smaller frame, rarely
+/// enough that the probes' own cost (a frame that may spend its budget on ordering) stays near 1%.
+const PROBE_EVERY: u32 = 240;
 
 impl Collider {
     /// A collider for `config` (its scheduler, models, threshold and audit switch; the budget is
@@ -94,6 +103,7 @@ impl Collider {
             ),
             ordering_ns_per_pair: None,
             shed_streak: 0,
+            measured: 0,
             config: config.clone(),
         })
     }
@@ -111,6 +121,16 @@ impl Collider {
     /// The narrow phase (pair states and test count) of the last frame.
     pub fn narrow(&self) -> &NarrowPhase {
         &self.narrow
+    }
+
+    /// Read this collider's buffers back into cache, as they would be in a server running it
+    /// frame after frame (see [`crate::warm`]; for the open-loop protocol).
+    pub fn warm(&self) {
+        self.narrow.warm();
+        self.priorities.warm();
+        self.scheduler.warm();
+        self.fallback.warm();
+        crate::warm::lines(self.calibration.bins());
     }
 
     /// Whether the scheduler prioritises, given whether there is a fixation.
@@ -165,6 +185,7 @@ impl Collider {
         // frame's allocations, a preemption) must not shed the ordering for good, so every
         // PROBE_EVERY-th frame in a row that would shed orders anyway and measures again.
         let affordable = match self.ordering_ns_per_pair {
+            Some(_) if self.measured < LEARN_FRAMES => true,
             Some(per_pair) => {
                 meter
                     .wall_left_ns()
@@ -205,16 +226,19 @@ impl Collider {
         };
         if affordable {
             self.scheduler.run(&mut self.narrow, &work, &mut meter);
-            // A prioritisation the deadline cut short measured only part of its cost.
-            let complete = !prioritised
+            // A prioritisation the deadline cut short is priced per pair it reached.
+            let reached = if !prioritised
                 || (self.priorities.bodies_done
                     && (self.priorities.reached == n
-                        || schedule::needs(self.config.scheduler).bodies_only));
-            if matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_))
-                && n > 0
-                && complete
+                        || schedule::needs(self.config.scheduler).bodies_only))
             {
-                let cost = (t1 - t0 + self.scheduler.ordering_ns()) as f64 / n as f64;
+                n
+            } else {
+                self.priorities.reached.max(1)
+            };
+            if matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_)) && n > 0 {
+                let cost = (t1 - t0 + self.scheduler.ordering_ns()) as f64 / reached as f64;
+                self.measured = self.measured.saturating_add(1);
                 // Quick to fall, slow to rise: slow outliers are common, fast ones are not.
                 self.ordering_ns_per_pair = Some(match self.ordering_ns_per_pair {
                     Some(old) if cost < old => cost,
@@ -369,7 +393,7 @@ mod tests {
     use std::cell::Cell;
 
     /// A clock that advances 1 µs at every read: the ordering, a handful of reads, costs far more
-    /// than a 10 µs frame can pay.
+    /// than a 2 µs frame can pay.
     struct Ticking(Cell<u64>);
     impl Clock for Ticking {
         fn now_ns(&self) -> u64 {
@@ -391,20 +415,20 @@ mod tests {
         let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
         let clock = Ticking(Cell::new(0));
         let fixation = Some(Fixation::at(0.5, 0.5));
-        let shed: Vec<bool> = (0..2 * (PROBE_EVERY + 1) + 1)
+        let shed: Vec<bool> = (0..LEARN_FRAMES + 2 * (PROBE_EVERY + 1))
             .map(|_| {
                 col.evaluate(
                     &sim.frame_input(),
                     fixation,
-                    FrameBudget::Wall(10_000),
+                    FrameBudget::Wall(2_000),
                     &clock,
                 )
                 .ordering_shed
             })
             .collect();
-        // Frame 0 orders (nothing measured yet) and learns the cost; then PROBE_EVERY frames
-        // shed, one orders to measure again, and so on.
-        let mut want = vec![false];
+        // The first LEARN_FRAMES order and learn the cost; then PROBE_EVERY frames shed, one
+        // orders to measure again, and so on.
+        let mut want = vec![false; LEARN_FRAMES as usize];
         for _ in 0..2 {
             want.extend(std::iter::repeat_n(true, PROBE_EVERY as usize));
             want.push(false);

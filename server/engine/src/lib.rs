@@ -63,6 +63,7 @@ pub mod simulation;
 pub mod soak;
 pub mod sphere_tree;
 pub mod validate;
+pub mod warm;
 pub mod world;
 
 pub use budget::{Clock, FrameBudget, FrozenClock};

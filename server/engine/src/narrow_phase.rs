@@ -225,6 +225,14 @@ pub struct NarrowPhase {
 }
 
 impl NarrowPhase {
+    /// Read every buffer back into cache (see [`crate::warm`]).
+    pub fn warm(&self) {
+        crate::warm::lines(&self.pairs);
+        crate::warm::lines(&self.frames[..self.pairs.len().min(self.frames.len())]);
+        crate::warm::lines(&self.arena);
+        crate::warm::lines(&self.witness);
+    }
+
     /// Start a frame with these candidate pairs. Buffers are reused.
     pub fn reset(&mut self, candidates: &[(u32, u32)]) {
         self.pairs.clear();

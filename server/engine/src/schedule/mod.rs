@@ -53,6 +53,8 @@ pub trait Scheduler: std::fmt::Debug + Send {
     fn ordering_ns(&self) -> u64 {
         0
     }
+    /// Read the scheduler's own buffers back into cache (see [`crate::warm`]).
+    fn warm(&self) {}
 }
 
 /// The scheduler for `kind` (`options` configure [`Priced`] only).

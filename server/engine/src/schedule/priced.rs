@@ -328,6 +328,18 @@ impl Scheduler for Priced {
         self.ordering_ns
     }
 
+    fn warm(&self) {
+        crate::warm::lines(&self.weight);
+        crate::warm::lines(&self.dist);
+        crate::warm::lines(&self.ratio);
+        crate::warm::lines(&self.initial.keys);
+        crate::warm::lines(&self.initial.counts);
+        crate::warm::lines(&self.initial.order);
+        for b in &self.queue.buckets {
+            crate::warm::lines(b);
+        }
+    }
+
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
         let cal = work.calibration;
         let started = meter.now_ns();

@@ -66,6 +66,22 @@ pub struct Priorities {
 }
 
 impl Priorities {
+    /// Read every buffer back into cache (see [`crate::warm`]).
+    pub fn warm(&self) {
+        for v in [
+            &self.weight,
+            &self.falloff,
+            &self.scale,
+            &self.dist,
+            &self.body_scale,
+        ] {
+            crate::warm::lines(v);
+        }
+        crate::warm::lines(&self.inner);
+        crate::warm::lines(&self.body);
+        crate::warm::lines(&self.body_record);
+    }
+
     /// Forget this frame's priorities: every pair reads as not prioritised.
     pub fn clear(&mut self) {
         self.reached = 0;

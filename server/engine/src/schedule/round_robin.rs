@@ -17,6 +17,10 @@ impl Scheduler for RoundRobin {
         SchedulerKind::RoundRobin
     }
 
+    fn warm(&self) {
+        crate::warm::lines(&self.queue);
+    }
+
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
         self.queue.clear();
         self.queue.extend(0..np.pairs.len() as u32);
