@@ -638,6 +638,32 @@ pub fn run_frames_parts(
     }
     times.sort_unstable();
     let exact_ns = times.get(times.len() / 2).map_or(0.0, |&t| t as f64);
+    // Wall-clock runs first see the last timing frame, uncounted (gaze at the screen centre), as
+    // a server that has been running would have seen the frame before: they learn what their
+    // ordering costs here and keep that frame's witnesses. Sphere-test runs do not, so their rows
+    // replay bit for bit.
+    if cfg.timing_frames > 0 {
+        let input = source.frame_input();
+        for run in runs.iter_mut() {
+            let Budget::Wall(x) = budgets[run.budget] else {
+                continue;
+            };
+            let fb = FrameBudget::Wall((x * exact_ns).round() as u64);
+            for _ in 0..foveal_engine::collider::LEARN_FRAMES {
+                let mut r = FrameReport::default();
+                let mut prof = PhaseProfile::default();
+                run.collider.warm();
+                run.collider.collide(
+                    &input,
+                    Some(Fixation::at(0.5, 0.5)),
+                    fb,
+                    &clock,
+                    &mut r,
+                    &mut prof,
+                );
+            }
+        }
+    }
 
     let frames = cfg.frames_for(n);
     let mut cells: Vec<Vec<Vec<Vec<Cell>>>> = parts

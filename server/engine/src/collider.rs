@@ -63,7 +63,7 @@ const ORDERING_SHARE: f64 = 0.5;
 
 /// The first wall-clock frames order whatever the estimate says, so that the cost is learnt from
 /// several frames, not from the first one alone (cold caches, first allocations).
-const LEARN_FRAMES: u32 = 3;
+pub const LEARN_FRAMES: u32 = 3;
 
 /// After this many wall-clock frames in a row shed (4 s at 60 Hz), the next one orders and
 /// measures the cost again: often enough to notice a faster machine or a smaller frame, rarely
