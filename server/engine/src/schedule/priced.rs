@@ -259,9 +259,10 @@ impl Priced {
         weight * gain / price
     }
 
-    /// Price every (untested) pair into the initial stream. The weight at a pair is the mean of its two bodies' (a few degrees apart at most), and the
-    /// squared centre distance keys the calibrated state: one pass writing sequential arrays and
-    /// a histogram, without a per-pair projection, division, square root or queue push.
+    /// Price every (untested) pair into the initial stream. The weight at a pair is the mean of
+    /// its two bodies' (a few degrees apart at most), and the squared centre distance keys the
+    /// calibrated state: one pass writing sequential arrays and a histogram, without a per-pair
+    /// projection, division, square root or queue push.
     fn price(&mut self, np: &NarrowPhase, work: &Work<'_>) {
         let pr = work.priorities;
         let cal = work.calibration;

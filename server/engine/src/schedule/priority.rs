@@ -194,38 +194,42 @@ impl Prioritiser {
     /// Screen position, eye ray and scale of a world point: one division and one square root.
     #[inline]
     fn body_view(&self, p: Vec3) -> BodyView {
-        let r = p - self.eye;
-        let depth = (-r.z).max(1e-9 * (1.0 + r.x.abs() + r.y.abs()));
-        let s = self.focal / depth;
-        let (dx, dy) = ((r.x * s) as f32, (-r.y * s) as f32);
+        let (dx, dy, s, ray) = self.project(p);
         let px = [self.centre[0] as f32 + dx, self.centre[1] as f32 + dy];
-        let (pitch, dist) = (self.pitch as f32, self.distance as f32);
-        let v = [dx * pitch, dy * pitch, dist];
-        let inv = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        let ray = [v[0] * inv, v[1] * inv, v[2] * inv];
         let scale = match self.falloff.unit() {
-            // A degree per pixel shrinks as cos^2 of the angle off the screen's axis.
-            EccentricityUnit::Degrees => s as f32 * (pitch / dist) * ray[2] * ray[2] * 57.295_78,
+            EccentricityUnit::Degrees => self.degree_scale(s, ray),
             EccentricityUnit::Pixels => s as f32,
         };
         BodyView { px, ray, scale }
     }
 
-    /// [`Self::body_view`]'s scale (degrees unit) and the chord of each body's eye ray to
-    /// `fix_ray`, for a block of bodies: the same operations in the same order, written over
-    /// plain arrays so that they vectorise.
-    fn project_block(&self, ps: &[Vec3], fix_ray: [f32; 3], arg: &mut [f32], scale: &mut [f32]) {
+    /// A world point's offset from the screen centre (pixels), pixels per scene unit at its depth
+    /// and its unit eye ray.
+    #[inline]
+    fn project(&self, p: Vec3) -> (f32, f32, f64, [f32; 3]) {
+        let r = p - self.eye;
+        let depth = (-r.z).max(1e-9 * (1.0 + r.x.abs() + r.y.abs()));
+        let s = self.focal / depth;
+        let (dx, dy) = ((r.x * s) as f32, (-r.y * s) as f32);
         let (pitch, dist) = (self.pitch as f32, self.distance as f32);
-        let per_deg = pitch / dist;
+        let v = [dx * pitch, dy * pitch, dist];
+        let inv = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        (dx, dy, s, [v[0] * inv, v[1] * inv, v[2] * inv])
+    }
+
+    /// Degrees of visual angle per scene unit, from [`Self::project`]'s scale and ray: a degree
+    /// per pixel shrinks as cos^2 of the angle off the screen's axis.
+    #[inline]
+    fn degree_scale(&self, s: f64, ray: [f32; 3]) -> f32 {
+        s as f32 * (self.pitch as f32 / self.distance as f32) * ray[2] * ray[2] * 57.295_78
+    }
+
+    /// [`Self::body_view`]'s scale (degrees unit) and the chord of each body's eye ray to
+    /// `fix_ray`, for a block of bodies, written over plain arrays so that it vectorises.
+    fn project_block(&self, ps: &[Vec3], fix_ray: [f32; 3], arg: &mut [f32], scale: &mut [f32]) {
         for ((p, a), sc) in ps.iter().zip(arg.iter_mut()).zip(scale.iter_mut()) {
-            let (rx, ry, rz) = (p.x - self.eye.x, p.y - self.eye.y, p.z - self.eye.z);
-            let depth = (-rz).max(1e-9 * (1.0 + rx.abs() + ry.abs()));
-            let s = self.focal / depth;
-            let (dx, dy) = ((rx * s) as f32, (-ry * s) as f32);
-            let v = [dx * pitch, dy * pitch, dist];
-            let inv = 1.0 / (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-            let ray = [v[0] * inv, v[1] * inv, v[2] * inv];
-            *sc = s as f32 * per_deg * ray[2] * ray[2] * 57.295_78;
+            let (_, _, s, ray) = self.project(*p);
+            *sc = self.degree_scale(s, ray);
             *a = chord(ray, fix_ray);
         }
     }
