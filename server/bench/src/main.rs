@@ -450,6 +450,10 @@ struct ScaleArgs {
     /// another broad phase.
     #[arg(long)]
     no_baseline: bool,
+    /// The narrow phase's scheduler in every run (default: the server's default, priced, which
+    /// settles the pairs near the fixation first).
+    #[arg(long, default_value = "priced", value_parser = parse_scheduler)]
+    scheduler: SchedulerKind,
     /// Output directory (scale.csv, scale.md).
     #[arg(long, default_value = foveal_bench::scale::DEFAULT_OUT)]
     out: PathBuf,
@@ -478,6 +482,7 @@ fn scale(args: &ScaleArgs) -> Result<()> {
         quick: args.quick,
         baseline: !args.no_baseline,
         seed: args.seed,
+        scheduler: args.scheduler,
         out: args.out.clone(),
     };
     let exe = std::env::current_exe().context("locating the foveal-bench binary")?;
@@ -504,4 +509,11 @@ fn main() -> Result<()> {
         Command::Calibrate(args) => calibrate(args),
         Command::Replay(args) => replay(&args.file, &args.options),
     }
+}
+
+fn parse_scheduler(s: &str) -> Result<SchedulerKind, String> {
+    SchedulerKind::from_name(s).ok_or_else(|| {
+        let names: Vec<&str> = SchedulerKind::ALL.iter().map(|k| k.name()).collect();
+        format!("unknown scheduler {s:?}: one of {}", names.join(", "))
+    })
 }

@@ -148,6 +148,8 @@ pub struct RunSpec {
     pub broad_phase: BroadPhaseKind,
     /// Exact or budgeted.
     pub mode: Mode,
+    /// The narrow phase's scheduler.
+    pub scheduler: SchedulerKind,
     /// Scene seed.
     pub seed: u64,
     /// Uncounted frames before the measured ones.
@@ -180,8 +182,16 @@ pub struct RunResult {
     /// Peak resident set of the child process (`VmHWM`, KiB; 0 where unavailable).
     pub peak_rss_kib: u64,
     /// Share of frames in which every candidate pair within 5 degrees of the fixation was settled
-    /// exactly (none deemed).
+    /// exactly: none deemed, and every region that may hold one searched.
     pub foveal_exact_share: f64,
+    /// Share of frames in which a whole-frame budget left some broad-phase region stale.
+    pub stale_share: f64,
+    /// Mean stale regions per frame, and the regions there are.
+    pub stale_regions_mean: f64,
+    /// Regions of the broad phase (0: it has none to shed).
+    pub regions: u32,
+    /// Mean pairs held by stale regions per frame.
+    pub stale_pairs_mean: f64,
     /// Mean candidate pairs within 5 degrees of the fixation per frame.
     pub foveal_pairs_mean: f64,
     /// Mean candidate pairs per frame.
@@ -217,6 +227,8 @@ pub struct ScaleConfig {
     pub baseline: bool,
     /// Scene seed.
     pub seed: u64,
+    /// The narrow phase's scheduler in every run (default: the server's).
+    pub scheduler: SchedulerKind,
     /// Output directory.
     pub out: PathBuf,
 }
@@ -232,6 +244,7 @@ impl Default for ScaleConfig {
             quick: false,
             baseline: true,
             seed: 1,
+            scheduler: SimConfig::default().scheduler,
             out: PathBuf::from(DEFAULT_OUT),
         }
     }
@@ -329,6 +342,7 @@ impl ScaleConfig {
                     threads,
                     broad_phase,
                     mode,
+                    scheduler: self.scheduler,
                     seed: self.seed,
                     warmup,
                     frames,
@@ -351,7 +365,7 @@ fn sim_config(spec: &RunSpec) -> SimConfig {
     SimConfig {
         scene: SceneConfig::paper(spec.n, spec.seed),
         budget: spec.mode.budget(),
-        scheduler: SchedulerKind::RoundRobin,
+        scheduler: spec.scheduler,
         audit: false,
         threads: spec.threads,
         broad_phase: spec.broad_phase,
@@ -443,6 +457,7 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
     let mut phase_totals: Vec<(String, u64)> = Vec::new();
     let (mut good, mut foveal, mut candidates, mut deemed, mut tests) =
         (0u64, 0u64, 0u64, 0u64, 0u64);
+    let (mut stale_frames, mut stale_regions, mut stale_pairs, mut regions) = (0u64, 0u64, 0u64, 0);
     for _ in 0..frames {
         let t = Instant::now();
         let r = sim.step(fixation, &clock);
@@ -455,7 +470,11 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         for ((_, total), (_, ns)) in phase_totals.iter_mut().zip(&ph) {
             *total += ns;
         }
-        good += u64::from(r.foveal_deemed == 0);
+        good += u64::from(r.foveal_deemed == 0 && r.foveal_stale == 0);
+        stale_frames += u64::from(r.stale_regions > 0);
+        stale_regions += u64::from(r.stale_regions);
+        stale_pairs += u64::from(r.stale_pairs);
+        regions = r.regions;
         foveal += u64::from(r.foveal_pairs);
         candidates += u64::from(r.candidate_pairs);
         deemed += u64::from(r.deemed);
@@ -486,6 +505,10 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         broad_ns_per_body: mean(broad_total) / f64::from(spec.n),
         peak_rss_kib: peak_rss_kib(),
         foveal_exact_share: mean(good),
+        stale_share: mean(stale_frames),
+        stale_regions_mean: mean(stale_regions),
+        regions,
+        stale_pairs_mean: mean(stale_pairs),
         foveal_pairs_mean: mean(foveal),
         candidates_mean: mean(candidates),
         deemed_mean: mean(deemed),
@@ -779,14 +802,17 @@ pub fn markdown(out: &ScaleOutput) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "Paper scene (seed {}), round-robin, fixation at the screen centre, wall clock. Whole step = \
+        "Paper scene (seed {}), scheduler {}, fixation at the screen centre, wall clock. Whole step = \
          `Instant` around `Simulation::step` (p99 nearest rank: the maximum below 100 frames); \
          phase shares = phase totals from `FrameReport.profile` over total step time; foveal exact = \
-         frames in which no pair within 5° of the fixation was deemed. Each run in its own process; \
-         RSS is its peak (`VmHWM`). Previous engine = the same N and mode with one thread and the \
-         sweep-and-prune broad phase (the engine before threads and the grid; its other phases are \
-         today's).\n",
-        out.results.first().map_or(1, |r| r.spec.seed)
+         frames in which no pair within 5° of the fixation was deemed and every region that may hold \
+         one was searched; stale = frames in which a whole-frame budget left broad-phase regions \
+         unsearched (mean stale regions of all regions, and the pairs they held). Each run in its own \
+         process; RSS is its peak (`VmHWM`). Previous engine = the same N and mode with one thread \
+         and the sweep-and-prune broad phase (the engine before threads and the grid; its other \
+         phases are today's).\n",
+        out.results.first().map_or(1, |r| r.spec.seed),
+        out.results.first().map_or("-", |r| r.spec.scheduler.name())
     );
     let _ = writeln!(
         s,
@@ -806,13 +832,13 @@ pub fn markdown(out: &ScaleOutput) -> String {
     }
     let _ = writeln!(
         s,
-        " step ns/body | broad ns/body | peak RSS (MiB) | foveal exact | foveal pairs/frame | candidates/frame | deemed/frame |"
+        " step ns/body | broad ns/body | peak RSS (MiB) | foveal exact | foveal pairs/frame | candidates/frame | deemed/frame | stale frames | stale regions | stale pairs/frame |"
     );
     let _ = write!(s, "|---|---|---|---|---|---|---|---|---|");
     for _ in &names {
         let _ = write!(s, "---|");
     }
-    let _ = writeln!(s, "---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "---|---|---|---|---|---|---|---|---|---|");
     for r in &out.results {
         let previous = match out.baseline_of(&r.spec) {
             Some(b) if b.spec == r.spec => "(this run)".to_string(),
@@ -843,14 +869,18 @@ pub fn markdown(out: &ScaleOutput) -> String {
         }
         let _ = writeln!(
             s,
-            " {:.1} | {:.1} | {:.0} | {:.1}% | {:.1} | {:.0} | {:.0} |",
+            " {:.1} | {:.1} | {:.0} | {:.1}% | {:.1} | {:.0} | {:.0} | {:.1}% | {:.1} of {} | {:.0} |",
             r.step_ns_per_body,
             r.broad_ns_per_body,
             r.peak_rss_kib as f64 / 1024.0,
             100.0 * r.foveal_exact_share,
             r.foveal_pairs_mean,
             r.candidates_mean,
-            r.deemed_mean
+            r.deemed_mean,
+            100.0 * r.stale_share,
+            r.stale_regions_mean,
+            r.regions,
+            r.stale_pairs_mean
         );
     }
     let targets = out.targets();
@@ -887,7 +917,8 @@ pub fn csv(results: &[RunResult]) -> String {
     }
     s.push_str(
         ",step_ns_per_body,broad_ns_per_body,peak_rss_kib,foveal_exact_share,foveal_pairs_mean,\
-         candidates_mean,deemed_mean,sphere_tests_mean,setup_s,warmup_s,load1_start\n",
+         candidates_mean,deemed_mean,sphere_tests_mean,setup_s,warmup_s,load1_start,scheduler,\
+         stale_share,stale_regions_mean,regions,stale_pairs_mean\n",
     );
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
     for r in results {
@@ -919,7 +950,7 @@ pub fn csv(results: &[RunResult]) -> String {
         }
         let _ = writeln!(
             s,
-            ",{},{},{},{},{},{},{},{},{},{},{}",
+            ",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.step_ns_per_body,
             r.broad_ns_per_body,
             r.peak_rss_kib,
@@ -930,7 +961,12 @@ pub fn csv(results: &[RunResult]) -> String {
             r.sphere_tests_mean,
             r.setup_s,
             r.warmup_s,
-            opt(r.load1_start)
+            opt(r.load1_start),
+            r.spec.scheduler.name(),
+            r.stale_share,
+            r.stale_regions_mean,
+            r.regions,
+            r.stale_pairs_mean
         );
     }
     s

@@ -52,6 +52,8 @@ pub struct Collider {
     shed_streak: u32,
     /// Wall-clock frames whose ordering was measured.
     measured: u32,
+    /// The last foveal pass: pairs it settled and the time it took (ns).
+    foveal_pass: Option<(u32, u64)>,
 }
 
 /// A wall-clock frame orders its work only if the expected cost of ordering is at most this
@@ -105,6 +107,7 @@ impl Collider {
             ordering_ns_per_pair: None,
             shed_streak: 0,
             measured: 0,
+            foveal_pass: None,
             config: config.clone(),
         })
     }
@@ -117,6 +120,12 @@ impl Collider {
     /// What prioritisation computed for the last frame's pairs.
     pub fn priorities(&self) -> &Priorities {
         &self.priorities
+    }
+
+    /// The last foveal pass of [`Self::collide_foveal_first`]: the pairs it settled and its time
+    /// (ns).
+    pub fn foveal_pass(&self) -> Option<(u32, u64)> {
+        self.foveal_pass
     }
 
     /// The narrow phase (pair states and test count) of the last frame.
@@ -158,6 +167,27 @@ impl Collider {
         r: &mut FrameReport,
         profile: &mut PhaseProfile,
     ) {
+        self.collide_foveal_first(input, fixation, budget, clock, r, profile, None);
+    }
+
+    /// [`Self::collide`] for a whole-frame budget's frame (see [`crate::shedding`]) whose first
+    /// `foveal_prefix` candidates are the pairs of the regions that may hold foveal pairs: with
+    /// a fixation, the pairs among them whose centre is within [`FOVEAL_DEG`] of it (widened by
+    /// its uncertainty) are resolved to completion first, one after another, and round-robin
+    /// then spends what is left of the budget on the rest. At this scale the region order is
+    /// the gaze ordering, and it costs one fovea test per pair of those regions instead of a
+    /// prioritisation of every pair. With `None`, exactly [`Self::collide`].
+    #[allow(clippy::too_many_arguments)]
+    pub fn collide_foveal_first(
+        &mut self,
+        input: &FrameInput<'_>,
+        fixation: Option<Fixation>,
+        budget: FrameBudget,
+        clock: &dyn Clock,
+        r: &mut FrameReport,
+        profile: &mut PhaseProfile,
+        foveal_prefix: Option<usize>,
+    ) {
         let t0 = clock.now_ns();
         self.narrow.reset(input.candidates);
         let fixation_px = fixation.map(|f| {
@@ -180,6 +210,52 @@ impl Collider {
             return;
         }
         let n = self.narrow.pairs.len();
+        if let (Some(prefix), Some(px)) = (
+            foveal_prefix.filter(|_| budget != FrameBudget::Unlimited),
+            fixation_px,
+        ) {
+            let radius = FOVEAL_DEG + fixation.map_or(0.0, |f| f.clamped().uncertainty_deg);
+            let fovea = Fovea::new(input.viewer, px, radius.min(89.0));
+            let pos = &input.world.position;
+            let pass_start = clock.now_ns();
+            let mut settled = 0u32;
+            'pairs: for i in 0..prefix.min(n) {
+                let p = &self.narrow.pairs[i];
+                if !fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5) {
+                    continue;
+                }
+                loop {
+                    if meter.exhausted(self.narrow.tests) {
+                        break 'pairs;
+                    }
+                    if self.narrow.step(i, input.tree, input.world)
+                        != crate::narrow_phase::StepOutcome::Active
+                    {
+                        settled += 1;
+                        break;
+                    }
+                }
+            }
+            self.foveal_pass = Some((settled, clock.now_ns().saturating_sub(pass_start)));
+            self.priorities.clear();
+            let work = Work {
+                tree: input.tree,
+                world: input.world,
+                view: None,
+                priorities: &self.priorities,
+                calibration: &self.calibration,
+            };
+            self.fallback.run(&mut self.narrow, &work, &mut meter);
+            let deemed = self.narrow.deem_open();
+            self.narrow.remember_witnesses(input.world.len());
+            profile.prioritise_ns = 0;
+            profile.narrow_ns = clock.now_ns() - t0;
+            r.candidate_pairs = n as u32;
+            r.deemed = deemed;
+            r.sphere_tests = self.narrow.tests;
+            r.budget_exhausted = meter.was_exhausted();
+            return;
+        }
         // Under a wall-clock budget too small to pay for ordering the pairs, ordering them would
         // leave less time for the tests than it is worth: shed it, run round-robin, and say so.
         // The cost is learnt from frames that ordered; one slow frame (a cold cache, the first
@@ -269,6 +345,17 @@ impl Collider {
         fixation: Option<Fixation>,
         r: &mut FrameReport,
     ) {
+        self.measure_within(input, fixation, metrics::Effort::default(), r);
+    }
+
+    /// [`Self::measure`] within an [`metrics::Effort`] (a whole-frame budget's metrics).
+    pub fn measure_within(
+        &mut self,
+        input: &FrameInput<'_>,
+        fixation: Option<Fixation>,
+        effort: metrics::Effort,
+        r: &mut FrameReport,
+    ) {
         let fixation_px = fixation.map(|f| {
             let f = f.clamped();
             input.viewer.to_pixels(f.x, f.y)
@@ -282,13 +369,14 @@ impl Collider {
         });
         let (tree, world) = (input.tree, input.world);
         let fovea = fixation_px.map(|px| Fovea::new(input.viewer, px, FOVEAL_DEG));
-        let m = metrics::measure(
+        let m = metrics::measure_within(
             &self.narrow,
             tree,
             world,
             view.as_ref(),
             fovea.as_ref(),
             self.config.threads as usize,
+            effort,
         );
         r.real_collisions = m.real;
         r.resolved_per_level = m.per_level;

@@ -24,6 +24,7 @@
 //! - [`report`]: the frame record, the phase profile and the audit.
 //! - [`collider`]: prioritise, narrow phase, metrics and audit on frames handed in (closed and
 //!   open loop); [`clairvoyant`]: the least true P any schedule could reach with a budget.
+//! - [`shedding`]: what a whole-frame wall-clock budget sheds at large N, in perceptual order.
 //! - [`simulation`]: one frame of the main loop; [`export`]: a frame as JSON.
 //! - [`soak`]: long-run invariant checks for the stress suite.
 //!
@@ -59,6 +60,7 @@ pub mod response;
 pub mod rng;
 pub mod schedule;
 pub mod shape;
+pub mod shedding;
 pub mod simulation;
 pub mod soak;
 pub mod sphere_tree;

@@ -133,6 +133,27 @@ impl<'a> Fovea<'a> {
     }
 }
 
+/// How much of a frame's metrics to sum exactly: a whole-frame budget lowers both bounds to what
+/// its time left allows (see `shedding`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Effort {
+    /// Most deemed pairs whose Δ and P are summed exactly; beyond, a systematic sample of about
+    /// this many (at least 1).
+    pub sample_limit: u32,
+    /// Only the first this many pairs can be foveal: pairs are listed by region in perceptual
+    /// order and the regions after these lie wholly outside the fovea, so they are not tested.
+    pub fovea_pairs: usize,
+}
+
+impl Default for Effort {
+    fn default() -> Self {
+        Self {
+            sample_limit: EXACT_LIMIT,
+            fovea_pairs: usize::MAX,
+        }
+    }
+}
+
 /// Sum the metrics of `np`'s pairs on up to `threads` threads. `view` measures P (None: P is 0);
 /// `fovea` counts foveal pairs (None: 0).
 pub fn measure(
@@ -143,18 +164,20 @@ pub fn measure(
     fovea: Option<&Fovea<'_>>,
     threads: usize,
 ) -> Metrics {
-    measure_with_limit(np, tree, world, view, fovea, threads, EXACT_LIMIT)
+    measure_within(np, tree, world, view, fovea, threads, Effort::default())
 }
 
-fn measure_with_limit(
+/// [`measure`] within an [`Effort`].
+pub fn measure_within(
     np: &NarrowPhase,
     tree: &SphereTree,
     world: &World,
     view: Option<&FrameView<'_>>,
     fovea: Option<&Fovea<'_>>,
     threads: usize,
-    limit: u32,
+    effort: Effort,
 ) -> Metrics {
+    let limit = effort.sample_limit;
     let deemed = np
         .pairs
         .iter()
@@ -182,7 +205,7 @@ fn measure_with_limit(
             if p.resolved_level > 0 {
                 part.m.per_level[p.resolved_level as usize - 1] += 1;
             }
-            if let Some(f) = fovea {
+            if let Some(f) = fovea.filter(|_| i < effort.fovea_pairs) {
                 let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
                 if f.contains_point(c) {
                     part.m.foveal += 1;
@@ -276,8 +299,11 @@ mod tests {
         assert_eq!(exact.stride, 1);
         assert_eq!(exact.delta_se, 0.0);
         let n = np.pairs.len() as u32;
-        let limit = n / 10;
-        let sampled = measure_with_limit(&np, &tree, &world, Some(&view), Some(&fovea), 1, limit);
+        let limit = Effort {
+            sample_limit: n / 10,
+            ..Effort::default()
+        };
+        let sampled = measure_within(&np, &tree, &world, Some(&view), Some(&fovea), 1, limit);
         assert!(sampled.stride >= 10, "{}", sampled.stride);
         assert!(
             (sampled.delta - exact.delta).abs() <= 4.0 * sampled.delta_se && sampled.delta_se > 0.0,
@@ -293,7 +319,7 @@ mod tests {
             (exact.foveal, exact.foveal)
         );
         assert!(exact.foveal > 0 && exact.foveal < n);
-        let two = measure_with_limit(&np, &tree, &world, Some(&view), Some(&fovea), 2, limit);
+        let two = measure_within(&np, &tree, &world, Some(&view), Some(&fovea), 2, limit);
         assert_eq!(two, sampled);
     }
 

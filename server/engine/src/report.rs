@@ -49,6 +49,9 @@ pub struct AuditReport {
     pub geometric_inaccuracy: f64,
     /// True P with the measuring model (None without a fixation).
     pub perceived_inaccuracy: Option<f64>,
+    /// Candidate pairs of this frame's positions (boxes overlapping) that the frame did not
+    /// collide because their region was stale: what shedding the broad phase cost.
+    pub missed_pairs: u32,
 }
 
 /// Eccentricity (degrees of visual angle) within which a frame counts its pairs as foveal: the
@@ -101,6 +104,16 @@ pub struct FrameReport {
     /// The wall-clock budget could not pay for ordering the pairs by gaze: this frame was
     /// scheduled gaze-blind round-robin instead.
     pub ordering_shed: bool,
+    /// Broad-phase regions a whole-frame wall-clock budget did not reach (see `shedding`): their
+    /// pairs were not searched, collided or responded to this frame. 0 under other budgets.
+    pub stale_regions: u32,
+    /// Of [`Self::stale_regions`], how many regions there are in all (0: the broad phase ran whole).
+    pub regions: u32,
+    /// Pairs the stale regions held when last searched.
+    pub stale_pairs: u32,
+    /// Of the stale regions, those that may hold a pair within [`FOVEAL_DEG`] of the fixation:
+    /// when not 0, [`Self::foveal_pairs`] misses what those regions hold.
+    pub foveal_stale: u32,
     /// Per-phase timings.
     pub profile: PhaseProfile,
     /// Exact answer for the deemed pairs, when auditing.

@@ -14,6 +14,7 @@ use crate::perception::Viewer;
 use crate::report::{FrameReport, PhaseProfile};
 use crate::response::exchange_velocities;
 use crate::shape::Star;
+use crate::shedding::Shedder;
 use crate::sphere_tree::SphereTree;
 use crate::world::World;
 
@@ -30,6 +31,8 @@ pub struct Simulation {
     report: FrameReport,
     next_index: u64,
     sim_time: f64,
+    /// What a whole-frame wall-clock budget sheds, and its learnt costs.
+    shedder: Shedder,
 }
 
 impl Simulation {
@@ -107,6 +110,7 @@ impl Simulation {
             report: FrameReport::default(),
             next_index: 0,
             sim_time: 0.0,
+            shedder: Shedder::default(),
             config,
         })
     }
@@ -170,17 +174,23 @@ impl Simulation {
     /// Run one frame. `fixation` is where the viewer looks (None, or non-finite, means unknown:
     /// no perceptual work is done and P is not measured). `clock` times the phases and enforces a
     /// wall-clock budget; pass [`FrozenClock`] for deterministic runs.
+    ///
+    /// A wall-clock budget covers the whole frame. Where the scene's broad phase has regions (the
+    /// grid, at large N), the frame sheds what does not fit in perceptual order (see
+    /// [`crate::shedding`]) and reports it ([`FrameReport::stale_regions`]); sphere-test and exact
+    /// budgets run every phase whole.
     pub fn step(&mut self, fixation: Option<Fixation>, clock: &dyn Clock) -> &FrameReport {
         let mut profile = PhaseProfile::default();
         let t0 = clock.now_ns();
         // The frame budget counts from here: integration and the broad phase spend it too.
         let budget = self.budget.starting_at(t0);
+        let deadline = match (self.budget, budget) {
+            (FrameBudget::Wall(ns), FrameBudget::Deadline(d)) => Some((d, ns)),
+            _ => None,
+        };
         self.integrate();
         let t1 = clock.now_ns();
         profile.integrate_ns = t1 - t0;
-        self.broad.update(&self.world.position);
-        let t2 = clock.now_ns();
-        profile.broad_ns = t2 - t1;
 
         let fixation_rejected = fixation.is_some_and(|f| !f.is_usable());
         let fixation = fixation.filter(Fixation::is_usable);
@@ -190,14 +200,56 @@ impl Simulation {
             fixation_rejected,
             ..FrameReport::default()
         };
+        let shedding = deadline.filter(|_| !self.broad.regions().is_empty());
+        let mut searched = 0;
+        if let Some((end, ns)) = shedding {
+            let mut pacer = self.shedder.pacer(end, ns);
+            let order = self.shedder.order(
+                self.broad.regions(),
+                &self.viewer,
+                fixation,
+                2.0 * self.tree.root_radius(),
+            );
+            let pass = self
+                .broad
+                .update_in_order(&self.world.position, order, &mut |pairs| {
+                    pacer.go_on(clock.now_ns(), pairs)
+                });
+            searched = pass.searched as usize;
+            r.regions = self.broad.regions().len() as u32;
+            r.stale_regions = pass.stale;
+            r.stale_pairs = pass.stale_pairs;
+            r.foveal_stale = self.shedder.foveal_regions().saturating_sub(searched) as u32;
+        } else {
+            self.broad.update(&self.world.position);
+        }
+        let t2 = clock.now_ns();
+        profile.broad_ns = t2 - t1;
+
+        let pairs = self.broad.pairs().len();
+        let narrow_budget = match shedding {
+            Some((end, _)) => FrameBudget::Deadline(self.shedder.narrow_deadline(end, pairs)),
+            None => budget,
+        };
         let input = FrameInput {
             tree: &self.tree,
             world: &self.world,
             candidates: self.broad.pairs(),
             viewer: &self.viewer,
         };
-        self.collider
-            .collide(&input, fixation, budget, clock, &mut r, &mut profile);
+        let foveal_prefix = shedding.map(|_| {
+            let foveal = self.shedder.foveal_regions().min(searched);
+            self.broad.region_pairs_before(foveal)
+        });
+        self.collider.collide_foveal_first(
+            &input,
+            fixation,
+            narrow_budget,
+            clock,
+            &mut r,
+            &mut profile,
+            foveal_prefix,
+        );
         let t3 = clock.now_ns();
         r.responses = self.respond();
         let t4 = clock.now_ns();
@@ -212,8 +264,34 @@ impl Simulation {
             candidates: self.broad.pairs(),
             viewer: &self.viewer,
         };
-        self.collider.measure(&input, fixation, &mut r);
-        profile.measure_ns = clock.now_ns() - t4;
+        // Pairs are listed region by region in the searched order; only the first regions can
+        // hold foveal pairs.
+        let effort = match (shedding, foveal_prefix) {
+            (Some((_, ns)), Some(prefix)) => Shedder::effort(ns, prefix),
+            _ => crate::metrics::Effort::default(),
+        };
+        self.collider
+            .measure_within(&input, fixation, effort, &mut r);
+        if r.stale_regions > 0
+            && let Some(a) = r.audit.as_mut()
+        {
+            a.missed_pairs = missed_pairs(self.broad.pairs(), self.broad.all_pairs());
+        }
+        let t5 = clock.now_ns();
+        profile.measure_ns = t5 - t4;
+        if shedding.is_some() {
+            // The tail: from where the narrow phase had to stop (or stopped) to the frame's end.
+            let narrow_end = match narrow_budget {
+                FrameBudget::Deadline(d) if r.budget_exhausted => d,
+                _ => t2 + profile.prioritise_ns + profile.narrow_ns,
+            };
+            self.shedder
+                .learn(searched, t5.saturating_sub(narrow_end), pairs);
+            if let Some((settled, ns)) = self.collider.foveal_pass() {
+                self.shedder
+                    .learn_foveal(r.foveal_pairs, r.foveal_stale == 0, settled, ns);
+            }
+        }
         r.profile = profile;
         self.report = r;
         &self.report
@@ -249,4 +327,14 @@ impl Simulation {
         }
         out
     }
+}
+
+/// Pairs of `all` (this frame's candidates, whatever was shed) missing from `searched`.
+fn missed_pairs(searched: &[(u32, u32)], mut all: Vec<(u32, u32)>) -> u32 {
+    let mut have = searched.to_vec();
+    have.sort_unstable();
+    all.sort_unstable();
+    all.iter()
+        .filter(|p| have.binary_search(p).is_err())
+        .count() as u32
 }

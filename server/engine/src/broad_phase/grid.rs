@@ -36,7 +36,7 @@
 
 use std::fmt;
 
-use super::PairBuffer;
+use super::{PairBuffer, Region, RegionPass};
 use crate::math::Vec3;
 
 /// Cells are made wider than their minimum by this factor, so that the rounding of the cell
@@ -59,6 +59,12 @@ const MAX_CELLS_PER_BODY: usize = 4;
 /// buckets for the second. At N = 1,000,000 that is 18 buckets, which sorted faster than 69 or 275.
 const MAX_BUCKET_SHIFT: u32 = 24;
 const TARGET_BUCKETS: usize = 32;
+
+/// The regions a frame budget sheds tile the screen-facing x-y plane in at most this many columns
+/// and rows (each region spans the volume's whole depth): enough that the regions around a 5-degree
+/// fovea are a few percent of the scene at every N measured, few enough that ordering them costs
+/// microseconds.
+const REGION_TILES: usize = 16;
 
 /// Fewest bodies worth handing to one thread: starting a scoped thread costs tens of
 /// microseconds, about the grid's time for this many bodies.
@@ -133,6 +139,17 @@ pub(super) struct Grid {
     pairs: PairBuffer,
     /// Output of partitions 1.. when running on several threads.
     partition_pairs: Vec<PairBuffer>,
+    /// x-cells and y-rows per region, and regions per axis (x, then y).
+    tile: [usize; 2],
+    tiles: [usize; 2],
+    /// Each region's box (its cells over the whole depth).
+    regions: Vec<Region>,
+    /// Each region's pairs as of the last update that searched it.
+    region_pairs: Vec<Vec<(u32, u32)>>,
+    /// `region_pairs` holds pairs (an update in order ran since the last full update).
+    regions_live: bool,
+    /// Pairs listed after each region the last update in order searched, in its order.
+    searched_ends: Vec<usize>,
 }
 
 impl fmt::Debug for Grid {
@@ -170,6 +187,29 @@ impl Grid {
         let per_bucket = cells.div_ceil(TARGET_BUCKETS).max(1);
         let bucket_shift = (usize::BITS - (per_bucket - 1).leading_zeros()).min(MAX_BUCKET_SHIFT);
         let buckets = cells.div_ceil(1 << bucket_shift);
+        let tile = [nx.div_ceil(REGION_TILES), n.div_ceil(REGION_TILES)];
+        let tiles = [nx.div_ceil(tile[0]), n.div_ceil(tile[1])];
+        let mut regions = Vec::with_capacity(tiles[0] * tiles[1]);
+        for ty in 0..tiles[1] {
+            for tx in 0..tiles[0] {
+                let x = [tx * tile[0], ((tx + 1) * tile[0]).min(nx)];
+                let y = [ty * tile[1], ((ty + 1) * tile[1]).min(n)];
+                regions.push(Region {
+                    lo: lo
+                        + Vec3::new(
+                            x[0] as f64 * side / nx as f64,
+                            y[0] as f64 * side / n as f64,
+                            0.0,
+                        ),
+                    hi: lo
+                        + Vec3::new(
+                            x[1] as f64 * side / nx as f64,
+                            y[1] as f64 * side / n as f64,
+                            side,
+                        ),
+                });
+            }
+        }
         Self {
             reach,
             dims,
@@ -186,6 +226,31 @@ impl Grid {
             min_bodies_per_thread: MIN_BODIES_PER_THREAD,
             pairs: PairBuffer::default(),
             partition_pairs: Vec::new(),
+            tile,
+            tiles,
+            region_pairs: vec![Vec::new(); regions.len()],
+            regions,
+            regions_live: false,
+            searched_ends: Vec::new(),
+        }
+    }
+
+    pub(super) fn regions(&self) -> &[Region] {
+        &self.regions
+    }
+
+    pub(super) fn regions_live(&self) -> bool {
+        self.regions_live
+    }
+
+    pub(super) fn region_pairs_before(&self, k: usize) -> usize {
+        match k {
+            0 => 0,
+            k => self
+                .searched_ends
+                .get(k - 1)
+                .copied()
+                .unwrap_or(self.pairs.as_slice().len()),
         }
     }
 
@@ -226,6 +291,86 @@ impl Grid {
     pub(super) fn update(&mut self, positions: &[Vec3]) {
         self.sort(positions);
         self.find_pairs();
+        if self.regions_live {
+            // The regions' pairs are out of date from here on; an update in order must not
+            // keep them as if they were last frame's.
+            self.region_pairs.iter_mut().for_each(Vec::clear);
+            self.regions_live = false;
+        }
+    }
+
+    /// Re-sort every body, then search the regions in `order` for as long as `go_on` (given the
+    /// pairs found so far) allows; the pairs found, region by region in that order, are this
+    /// update's pairs. Regions not reached keep their pairs of the last update that searched
+    /// them (stale).
+    pub(super) fn update_in_order(
+        &mut self,
+        positions: &[Vec3],
+        order: &[u32],
+        go_on: &mut dyn FnMut(usize) -> bool,
+    ) -> RegionPass {
+        self.sort(positions);
+        self.regions_live = true;
+        let rows = Rows {
+            reach: self.reach,
+            dims: self.dims,
+            sorted: &self.sorted,
+            start: &self.start,
+        };
+        let (n, nx) = (self.dims.n, self.dims.nx);
+        let mut searched = vec![false; self.regions.len()];
+        let mut pass = RegionPass::default();
+        self.pairs.set_len(0);
+        self.searched_ends.clear();
+        for &r in order {
+            let r = r as usize;
+            if r >= searched.len() || searched[r] {
+                continue;
+            }
+            if !go_on(self.pairs.as_slice().len()) {
+                break;
+            }
+            searched[r] = true;
+            let (tx, ty) = (r % self.tiles[0], r / self.tiles[0]);
+            let x = [tx * self.tile[0], ((tx + 1) * self.tile[0]).min(nx)];
+            let y = [ty * self.tile[1], ((ty + 1) * self.tile[1]).min(n)];
+            let buf = &mut self.region_pairs[r];
+            let mut len = 0;
+            for iz in 0..n {
+                for iy in y[0]..y[1] {
+                    len = rows.span(iz, iy, x[0], x[1], buf, len);
+                }
+            }
+            buf.truncate(len);
+            if buf.capacity() > 4 * len + super::PAIR_SLACK {
+                buf.shrink_to(2 * len + super::PAIR_SLACK);
+            }
+            self.pairs.append(buf);
+            self.searched_ends.push(self.pairs.as_slice().len());
+            pass.searched += 1;
+        }
+        for (r, done) in searched.iter().enumerate() {
+            if !done {
+                pass.stale += 1;
+                pass.stale_pairs += self.region_pairs[r].len() as u32;
+            }
+        }
+        self.pairs.end_frame();
+        pass
+    }
+
+    /// Every candidate pair of the bodies as last sorted (what a full update would list), for
+    /// checking an update in order against.
+    pub(super) fn all_pairs(&self) -> Vec<(u32, u32)> {
+        let rows = Rows {
+            reach: self.reach,
+            dims: self.dims,
+            sorted: &self.sorted,
+            start: &self.start,
+        };
+        let mut out = PairBuffer::default();
+        rows.planes(0, self.dims.n, &mut out);
+        out.as_slice().to_vec()
     }
 
     /// Two-level counting sort by cell, stable in id. With several parts, the bodies are split
@@ -418,56 +563,74 @@ impl Rows<'_> {
     /// into `out`.
     fn planes(&self, z0: usize, z1: usize, out: &mut PairBuffer) {
         let Dims { n, nx, .. } = self.dims;
-        let cells = self.dims.cells();
-        let (start, sorted, r) = (self.start, self.sorted, self.reach);
         let buf = out.storage();
         let mut len = 0;
         for iz in z0..z1 {
             for iy in 0..n {
-                let row = (iz * n + iy) * nx;
-                let up = row + n * nx;
-                // Forward rows (dy, dz) = (1, 0), (-1, 1), (0, 1), (1, 1); `cells` is the empty row.
-                let next = [
-                    if iy + 1 < n { row + nx } else { cells },
-                    if iz + 1 < n && iy > 0 { up - nx } else { cells },
-                    if iz + 1 < n { up } else { cells },
-                    if iz + 1 < n && iy + 1 < n {
-                        up + nx
-                    } else {
-                        cells
-                    },
-                ];
-                for i in start[row] as usize..start[row + nx] as usize {
-                    let p = sorted[i];
-                    let ix = p.cell as usize - row;
-                    let (lo, hi) = (ix.saturating_sub(X_SPLIT), (ix + X_SPLIT + 1).min(nx));
-                    let mut windows = [(i + 1, start[row + hi] as usize); 5];
-                    for (w, &b) in windows[1..].iter_mut().zip(&next) {
-                        *w = (start[b + lo] as usize, start[b + hi] as usize);
-                    }
-                    let most: usize = windows.iter().map(|w| w.1 - w.0 + ALWAYS).sum();
-                    if buf.len() < len + most {
-                        buf.resize((2 * buf.len()).max(len + most) + 64, (0, 0));
-                    }
-                    for (b0, b1) in windows {
-                        // The first ALWAYS slots are tested whatever the window's length and the
-                        // tests past its end masked: a loop with an unpredictable trip count costs
-                        // a mispredicted exit, about as much as a few tests, and most windows are
-                        // this short (the slots exist: `sorted` is padded).
-                        for (k, q) in sorted[b0..b0 + ALWAYS].iter().enumerate() {
-                            let hit = overlap(&p, q, r) & (b0 + k < b1);
-                            buf[len] = (p.id.min(q.id), p.id.max(q.id));
-                            len += usize::from(hit);
-                        }
-                        for q in sorted.get(b0 + ALWAYS..b1).unwrap_or_default() {
-                            buf[len] = (p.id.min(q.id), p.id.max(q.id));
-                            len += usize::from(overlap(&p, q, r));
-                        }
-                    }
-                }
+                len = self.span(iz, iy, 0, nx, buf, len);
             }
         }
         out.set_len(len);
+    }
+
+    /// The candidate pairs whose first body (in slot order) is in x-cells `x0..x1` of row
+    /// (`iy`, `iz`), body by body, written into `buf` from `len` on (growing it as needed);
+    /// returns the new length.
+    #[inline]
+    fn span(
+        &self,
+        iz: usize,
+        iy: usize,
+        x0: usize,
+        x1: usize,
+        buf: &mut Vec<(u32, u32)>,
+        mut len: usize,
+    ) -> usize {
+        let Dims { n, nx, .. } = self.dims;
+        let cells = self.dims.cells();
+        let (start, sorted, r) = (self.start, self.sorted, self.reach);
+        let row = (iz * n + iy) * nx;
+        let up = row + n * nx;
+        // Forward rows (dy, dz) = (1, 0), (-1, 1), (0, 1), (1, 1); `cells` is the empty row.
+        let next = [
+            if iy + 1 < n { row + nx } else { cells },
+            if iz + 1 < n && iy > 0 { up - nx } else { cells },
+            if iz + 1 < n { up } else { cells },
+            if iz + 1 < n && iy + 1 < n {
+                up + nx
+            } else {
+                cells
+            },
+        ];
+        for i in start[row + x0] as usize..start[row + x1] as usize {
+            let p = sorted[i];
+            let ix = p.cell as usize - row;
+            let (lo, hi) = (ix.saturating_sub(X_SPLIT), (ix + X_SPLIT + 1).min(nx));
+            let mut windows = [(i + 1, start[row + hi] as usize); 5];
+            for (w, &b) in windows[1..].iter_mut().zip(&next) {
+                *w = (start[b + lo] as usize, start[b + hi] as usize);
+            }
+            let most: usize = windows.iter().map(|w| w.1 - w.0 + ALWAYS).sum();
+            if buf.len() < len + most {
+                buf.resize((2 * buf.len()).max(len + most) + 64, (0, 0));
+            }
+            for (b0, b1) in windows {
+                // The first ALWAYS slots are tested whatever the window's length and the
+                // tests past its end masked: a loop with an unpredictable trip count costs
+                // a mispredicted exit, about as much as a few tests, and most windows are
+                // this short (the slots exist: `sorted` is padded).
+                for (k, q) in sorted[b0..b0 + ALWAYS].iter().enumerate() {
+                    let hit = overlap(&p, q, r) & (b0 + k < b1);
+                    buf[len] = (p.id.min(q.id), p.id.max(q.id));
+                    len += usize::from(hit);
+                }
+                for q in sorted.get(b0 + ALWAYS..b1).unwrap_or_default() {
+                    buf[len] = (p.id.min(q.id), p.id.max(q.id));
+                    len += usize::from(overlap(&p, q, r));
+                }
+            }
+        }
+        len
     }
 }
 

@@ -46,6 +46,28 @@ pub const SHRINK_AFTER_FRAMES: u32 = 120;
 /// Pairs of headroom the shrink rule always allows, so small scenes never reallocate.
 pub const PAIR_SLACK: usize = 1024;
 
+/// A column of the grid through the volume's whole depth: the unit of broad-phase work a
+/// whole-frame budget sheds (see [`BroadPhase::update_in_order`]). Bodies whose cell is in the
+/// region search it; the pairs they find may reach into a neighbouring region.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Region {
+    /// Lowest corner of the region's cells.
+    pub lo: Vec3,
+    /// Highest corner.
+    pub hi: Vec3,
+}
+
+/// What an update in order did.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct RegionPass {
+    /// Regions searched this update.
+    pub searched: u32,
+    /// Regions not reached: their pairs are those of the last update that searched them.
+    pub stale: u32,
+    /// Pairs held by the stale regions.
+    pub stale_pairs: u32,
+}
+
 /// Which broad-phase algorithm to run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -96,7 +118,7 @@ pub struct BroadPhase {
 #[derive(Debug, Clone)]
 enum Inner {
     SweepAndPrune(SweepAndPrune),
-    Grid(Grid),
+    Grid(Box<Grid>),
 }
 
 impl BroadPhase {
@@ -111,7 +133,7 @@ impl BroadPhase {
     /// into the edge cells.
     pub fn with_kind(kind: BroadPhaseKind, half: f64, lo: Vec3, side: f64, bodies: usize) -> Self {
         let inner = match kind.resolve(bodies) {
-            BroadPhaseKind::Grid => Inner::Grid(Grid::new(half, lo, side, bodies)),
+            BroadPhaseKind::Grid => Inner::Grid(Box::new(Grid::new(half, lo, side, bodies))),
             _ => Inner::SweepAndPrune(SweepAndPrune::new(half, lo, side, bodies)),
         };
         Self { inner }
@@ -154,6 +176,64 @@ impl BroadPhase {
             Inner::Grid(g) => g.update(positions),
         }
         self.pairs()
+    }
+
+    /// The regions an update in order can shed: the grid's; none for sweep and prune, whose sorted
+    /// lists are repaired as a whole.
+    pub fn regions(&self) -> &[Region] {
+        match &self.inner {
+            Inner::SweepAndPrune(_) => &[],
+            Inner::Grid(g) => g.regions(),
+        }
+    }
+
+    /// Bring the state up to date with `positions`, then search for pairs region by region in
+    /// `order` (indices into [`Self::regions`]) for as long as `go_on` allows it, given the pairs
+    /// found so far: a whole-frame budget's broad phase, which spends its time where the viewer
+    /// looks first. [`Self::pairs`] are then the searched regions' pairs, in that order; regions
+    /// not reached keep the pairs they had when last searched and are reported as stale. Sweep
+    /// and prune has no regions: it does a full [`Self::update`] and reports nothing stale.
+    ///
+    /// # Panics
+    /// If `positions` does not hold the number of bodies the state was built for.
+    pub fn update_in_order(
+        &mut self,
+        positions: &[Vec3],
+        order: &[u32],
+        go_on: &mut dyn FnMut(usize) -> bool,
+    ) -> RegionPass {
+        match &mut self.inner {
+            Inner::SweepAndPrune(_) => {
+                self.update(positions);
+                RegionPass::default()
+            }
+            Inner::Grid(g) => {
+                assert_eq!(
+                    positions.len(),
+                    g.bodies(),
+                    "body count changed under the broad phase"
+                );
+                g.update_in_order(positions, order, go_on)
+            }
+        }
+    }
+
+    /// Pairs the first `k` regions searched by the last [`Self::update_in_order`] contributed
+    /// (they come first in [`Self::pairs`]); every pair after a full update.
+    pub fn region_pairs_before(&self, k: usize) -> usize {
+        match &self.inner {
+            Inner::Grid(g) if g.regions_live() => g.region_pairs_before(k),
+            _ => self.pairs().len(),
+        }
+    }
+
+    /// Every candidate pair of the current positions, whatever the last update shed (the grid
+    /// searches its current sort again; for the audit). Sweep and prune always has them all.
+    pub fn all_pairs(&self) -> Vec<(u32, u32)> {
+        match &self.inner {
+            Inner::SweepAndPrune(s) => s.pairs().to_vec(),
+            Inner::Grid(g) => g.all_pairs(),
+        }
     }
 
     /// Candidate pairs of the last update, each as (smaller id, larger id).
@@ -466,6 +546,76 @@ mod tests {
             one.assert_well_formed(&pos);
             assert_eq!(sorted(got), expected);
         }
+    }
+
+    /// An update in order that reaches every region lists exactly the full update's pairs, on
+    /// 1 and 2 threads; one that stops early lists a subset, counts the regions it left and the
+    /// pairs they held when last searched; a full update forgets the regions' pairs.
+    #[test]
+    fn update_in_order_lists_the_regions_it_reaches() {
+        let n = 30_000;
+        let side = (n as f64 / 10.0).cbrt();
+        let half = 1.11 * 0.2;
+        let frames = scripted_frames(n, side, 8.0, 3);
+        for threads in [1, 2] {
+            let mut bp = BroadPhase::with_kind(BroadPhaseKind::Grid, half, Vec3::ZERO, side, n);
+            bp.set_threads(threads);
+            let mut full = bp.clone();
+            let regions = bp.regions().len();
+            assert!(regions >= 64, "{regions} regions");
+            let order: Vec<u32> = (0..regions as u32).rev().collect();
+            let pass = bp.update_in_order(&frames[0], &order, &mut |_| true);
+            assert_eq!(
+                (pass.searched as usize, pass.stale, pass.stale_pairs),
+                (regions, 0, 0)
+            );
+            let expected = sorted(full.update(&frames[0]).to_vec());
+            assert_eq!(sorted(bp.pairs().to_vec()), expected);
+            assert_eq!(bp.region_pairs_before(regions), expected.len());
+            // What each region held in frame 0, from its share of the list.
+            let held: Vec<usize> = (0..regions)
+                .map(|k| bp.region_pairs_before(k + 1) - bp.region_pairs_before(k))
+                .collect();
+            let stop = regions / 3;
+            let mut seen = Vec::new();
+            let pass = bp.update_in_order(&frames[1], &order, &mut |pairs| {
+                seen.push(pairs);
+                seen.len() <= stop
+            });
+            assert_eq!(pass.searched as usize, stop);
+            assert_eq!(pass.stale as usize, regions - stop);
+            assert_eq!(
+                pass.stale_pairs as usize,
+                held[stop..].iter().sum::<usize>()
+            );
+            // The pacing callback saw the running count before each region.
+            assert_eq!(seen[0], 0);
+            assert_eq!(seen[stop], bp.pairs().len());
+            let all = sorted(full.update(&frames[1]).to_vec());
+            assert_eq!(sorted(bp.all_pairs()), all);
+            let got = sorted(bp.pairs().to_vec());
+            assert!(got.len() < all.len() && !got.is_empty());
+            assert!(got.iter().all(|p| all.binary_search(p).is_ok()));
+            bp.update(&frames[2]);
+            let pass = bp.update_in_order(&frames[2], &order, &mut |_| false);
+            assert_eq!((pass.searched, pass.stale_pairs), (0, 0));
+            assert!(bp.pairs().is_empty());
+        }
+        // Sweep and prune has no regions and always updates whole.
+        let mut sap =
+            BroadPhase::with_kind(BroadPhaseKind::SweepAndPrune, half, Vec3::ZERO, side, n);
+        assert!(sap.regions().is_empty());
+        let pass = sap.update_in_order(&frames[0], &[], &mut |_| false);
+        assert_eq!(pass, RegionPass::default());
+        assert_eq!(
+            sorted(sap.pairs().to_vec()),
+            sorted(grid_pairs(&frames[0], half, side))
+        );
+    }
+
+    fn grid_pairs(pos: &[Vec3], half: f64, side: f64) -> Vec<(u32, u32)> {
+        let mut g = BroadPhase::with_kind(BroadPhaseKind::Grid, half, Vec3::ZERO, side, pos.len());
+        g.update(pos).to_vec()
     }
 
     /// Deterministic scene independent of the world generator: splitmix64 positions and

@@ -23,7 +23,9 @@ impl Scheduler for RoundRobin {
 
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
         self.queue.clear();
-        self.queue.extend(0..np.pairs.len() as u32);
+        // Pairs already settled this frame (a foveal pass before this one) are skipped.
+        self.queue
+            .extend((0..np.pairs.len() as u32).filter(|&i| np.pairs[i as usize].status.is_open()));
         round_robin(np, &mut self.queue, work, meter);
     }
 }
