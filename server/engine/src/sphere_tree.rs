@@ -31,8 +31,28 @@ pub struct SphereTree {
     child_count: Vec<u8>,
     /// `level_start[k]` is the index of the first sphere of level k+1; one extra entry at the end.
     level_start: Vec<u32>,
+    /// The spheres again, structure-of-arrays (x, y, z, radius), padded with [`LANES`] zeros at the
+    /// end: a step tests a run of children four at a time with one vector load per coordinate (see
+    /// [`Self::lanes`]), where the 16-byte records would need a shuffle per sphere and coordinate.
+    soa: [Vec<f32>; 4],
     depth: usize,
     shape: Star,
+}
+
+/// Spheres per vector in [`SphereTree::lanes`].
+pub const LANES: usize = 4;
+
+/// Four consecutive spheres, one vector per coordinate.
+#[derive(Debug, Clone, Copy)]
+pub struct Lanes {
+    /// Centre x of each sphere.
+    pub x: Vec4,
+    /// Centre y.
+    pub y: Vec4,
+    /// Centre z.
+    pub z: Vec4,
+    /// Radius.
+    pub r: Vec4,
 }
 
 /// One sphere as exported for clients and offline checks.
@@ -146,11 +166,17 @@ impl SphereTree {
                 child_count[pi] += 1;
             }
         }
+        let soa = std::array::from_fn(|c| {
+            let mut v: Vec<f32> = spheres.iter().map(|s| s[c]).collect();
+            v.resize(spheres.len() + LANES, 0.0);
+            v
+        });
         Ok(Self {
             spheres,
             first_child,
             child_count,
             level_start,
+            soa,
             depth,
             shape,
         })
@@ -180,6 +206,28 @@ impl SphereTree {
     pub fn child_spheres(&self, i: usize) -> (usize, &[Vec4]) {
         let r = self.children(i);
         (r.start, &self.spheres[r])
+    }
+
+    /// Index of the first child of sphere `i` and how many there are (0 for leaves).
+    #[inline]
+    pub fn child_run(&self, i: usize) -> (usize, usize) {
+        (
+            self.first_child[i] as usize,
+            usize::from(self.child_count[i]),
+        )
+    }
+
+    /// Spheres `j..j + LANES` as vectors. Lanes past the last sphere read the zero padding; the
+    /// caller masks every lane beyond the run it asked for.
+    #[inline]
+    pub fn lanes(&self, j: usize) -> Lanes {
+        let [x, y, z, r] = &self.soa;
+        Lanes {
+            x: Vec4::from_slice(&x[j..j + LANES]),
+            y: Vec4::from_slice(&y[j..j + LANES]),
+            z: Vec4::from_slice(&z[j..j + LANES]),
+            r: Vec4::from_slice(&r[j..j + LANES]),
+        }
     }
 
     /// Tree depth (number of levels).
