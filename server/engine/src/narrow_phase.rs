@@ -11,15 +11,24 @@
 //! far from the origin the pair is, and f32 suffices. Kernels compare squared distances; coincident
 //! centres are not special (distance 0 overlaps any pair of radii).
 
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use glam::Vec4;
 
 use crate::math::{LMat3, LVec3, Vec3};
-use crate::sphere_tree::{LANES, Lanes, SphereTree};
+use crate::sphere_tree::{LANES, SphereTree};
 use crate::world::World;
 
 /// Fewest pairs for which [`NarrowPhase::resolve_all`] splits the work over threads: a thread
 /// costs tens of microseconds to start, which 20,000 pairs (about a millisecond of tests) repay.
 pub const PARALLEL_MIN_PAIRS: usize = 20_000;
+
+/// Runs of pairs per thread that [`NarrowPhase::resolve_all`] hands out, and the fewest pairs in
+/// a run: enough runs that the last ones even out the threads, long enough that taking one costs
+/// nothing measurable.
+const RUNS_PER_THREAD: usize = 16;
+const MIN_RUN: usize = 1024;
 
 /// Arena entries always kept between frames (16 KiB): small scenes never reallocate.
 const ARENA_KEEP: usize = 4096;
@@ -70,11 +79,11 @@ impl PairFrame {
     /// `map(sphere q)` bit for bit (the matrix product sums its three columns' terms in the same
     /// order before the translation is added).
     #[inline]
-    pub fn map_lanes(&self, s: &Lanes) -> [Vec4; 3] {
+    pub fn map_lanes(&self, x: Vec4, y: Vec4, z: Vec4) -> [Vec4; 3] {
         let (m, t) = (&self.m, self.t);
         let row = |c: usize| {
-            ((Vec4::splat(m.x_axis[c]) * s.x + Vec4::splat(m.y_axis[c]) * s.y)
-                + Vec4::splat(m.z_axis[c]) * s.z)
+            ((Vec4::splat(m.x_axis[c]) * x + Vec4::splat(m.y_axis[c]) * y)
+                + Vec4::splat(m.z_axis[c]) * z)
                 + Vec4::splat(t[c])
         };
         [row(0), row(1), row(2)]
@@ -96,12 +105,6 @@ pub fn spheres_overlap(a: Vec4, b: LVec3, rb: f32) -> bool {
 fn overlap_mask(dx: Vec4, dy: Vec4, dz: Vec4, r: Vec4) -> u32 {
     let d2 = (dx * dx + dy * dy) + dz * dz;
     d2.cmple(r * r).bitmask()
-}
-
-/// The lanes of a vector that hold one of the `left` spheres still to test.
-#[inline]
-fn lane_mask(left: usize) -> u32 {
-    (1u32 << left.min(LANES)) - 1
 }
 
 /// Where a pair stands.
@@ -362,48 +365,61 @@ impl NarrowPhase {
             }
             return;
         }
-        let size = n.div_ceil(parts);
+        // Runs of pairs are handed out one at a time to whichever thread is free: pairs differ
+        // in cost by two orders of magnitude (one root test against a descent of hundreds), so
+        // fixed halves left one thread idle while the other finished its denser half.
+        let size = (n / (parts * RUNS_PER_THREAD)).max(MIN_RUN);
         self.lane_arenas.resize_with(parts - 1, Vec::new);
         self.lane_scratch.resize_with(parts - 1, Default::default);
         let witness = &self.witness;
         let mut first_arena = std::mem::take(&mut self.arena);
         let mut tests = vec![0u64; parts];
-        let mut lanes: Vec<Lane<'_>> = self
+        let runs: Vec<Mutex<(&mut [PairState], &mut [PairFrame])>> = self
             .pairs
             .chunks_mut(size)
             .zip(self.frames[..n].chunks_mut(size))
-            .zip(std::iter::once(&mut first_arena).chain(self.lane_arenas.iter_mut()))
-            .zip(std::iter::once(&mut self.scratch).chain(self.lane_scratch.iter_mut()))
-            .zip(tests.iter_mut())
-            .map(|((((pairs, frames), arena), scratch), tests)| Lane {
-                pairs,
-                frames,
-                arena,
-                scratch,
-                witness,
-                tests,
-            })
+            .map(Mutex::new)
             .collect();
-        let resolve = |lane: &mut Lane<'_>| {
-            for i in 0..lane.pairs.len() {
-                if lane.pairs[i].status.is_open() {
-                    lane.resolve_pair(i, tree, world);
-                    // Resolved pairs keep no list: one pair's descent at a time.
-                    lane.arena.clear();
+        let next = AtomicUsize::new(0);
+        let work =
+            |arena: &mut Vec<[u16; 2]>, scratch: &mut [Vec<[u16; 2]>; 2], tests: &mut u64| {
+                while let Some(run) = runs.get(next.fetch_add(1, Ordering::Relaxed)) {
+                    // Each run is taken by exactly one thread, so the lock is never contended.
+                    let mut guard = run
+                        .lock()
+                        .unwrap_or_else(std::sync::PoisonError::into_inner);
+                    let (pairs, frames) = &mut *guard;
+                    let mut lane = Lane {
+                        pairs,
+                        frames,
+                        arena: &mut *arena,
+                        scratch: &mut *scratch,
+                        witness,
+                        tests: &mut *tests,
+                    };
+                    for i in 0..lane.pairs.len() {
+                        if lane.pairs[i].status.is_open() {
+                            lane.resolve_pair(i, tree, world);
+                            // Resolved pairs keep no list: one pair's descent at a time.
+                            lane.arena.clear();
+                        }
+                    }
                 }
-            }
-        };
+            };
+        let (first_tests, other_tests) = tests.split_at_mut(1);
         std::thread::scope(|s| {
-            let mut it = lanes.iter_mut();
-            let first = it.next();
-            for lane in it {
-                s.spawn(move || resolve(lane));
+            for ((arena, scratch), tests) in self
+                .lane_arenas
+                .iter_mut()
+                .zip(self.lane_scratch.iter_mut())
+                .zip(other_tests.iter_mut())
+            {
+                let work = &work;
+                s.spawn(move || work(arena, scratch, tests));
             }
-            if let Some(lane) = first {
-                resolve(lane);
-            }
+            work(&mut first_arena, &mut self.scratch, &mut first_tests[0]);
         });
-        drop(lanes);
+        drop(runs);
         self.arena = first_arena;
         self.tests += tests.iter().sum::<u64>();
     }
@@ -670,8 +686,8 @@ fn expand(
     let mut end = 0;
     let mut tests = 0u64;
     for &[sa, sb] in list {
-        let (first, count) = tree.child_run(if descend_a { sa } else { sb } as usize);
-        tests += count as u64;
+        let kids = tree.kids(if descend_a { sa } else { sb } as usize);
+        tests += u64::from(kids.count);
         // The fixed sphere of this entry: B's mapped into A's frame, or A's.
         let fixed = if descend_a {
             let b = tree.sphere(sb as usize);
@@ -680,30 +696,40 @@ fn expand(
         } else {
             tree.sphere(sa as usize)
         };
+        let (fx, fy, fz, fr) = (
+            Vec4::splat(fixed.x),
+            Vec4::splat(fixed.y),
+            Vec4::splat(fixed.z),
+            Vec4::splat(fixed.w),
+        );
         // Four children per vector, kept in child order, as one test after another keeps them.
-        for j in (0..count).step_by(LANES) {
-            let kids = tree.lanes(first + j);
+        let halves = if kids.count as usize > LANES { 2 } else { 1 };
+        for h in 0..halves {
             let mask = if descend_a {
                 overlap_mask(
-                    kids.x - Vec4::splat(fixed.x),
-                    kids.y - Vec4::splat(fixed.y),
-                    kids.z - Vec4::splat(fixed.z),
-                    kids.r + Vec4::splat(fixed.w),
+                    kids.x[h] - fx,
+                    kids.y[h] - fy,
+                    kids.z[h] - fz,
+                    kids.r[h] + fr,
                 )
             } else {
-                let [x, y, z] = frame.map_lanes(&kids);
-                overlap_mask(
-                    Vec4::splat(fixed.x) - x,
-                    Vec4::splat(fixed.y) - y,
-                    Vec4::splat(fixed.z) - z,
-                    Vec4::splat(fixed.w) + kids.r,
-                )
-            } & lane_mask(count - j);
+                let [x, y, z] = frame.map_lanes(kids.x[h], kids.y[h], kids.z[h]);
+                overlap_mask(fx - x, fy - y, fz - z, fr + kids.r[h])
+            };
+            let base = kids.first as usize + h * LANES;
+            // One bounds check for the four slots; a kept child's slot is the count of kept
+            // lanes before it (at most 3).
+            let slots: &mut [[u16; 2]; LANES] = match out.get_mut(end..end + LANES) {
+                Some(s) => s.try_into().unwrap_or_else(|_| unreachable!()),
+                None => unreachable!("expand: `out` holds 8 slots per entry"),
+            };
+            let mut at = 0;
             for q in 0..LANES {
-                let kid = (first + j + q) as u16;
-                out[end] = if descend_a { [kid, sb] } else { [sa, kid] };
-                end += ((mask >> q) & 1) as usize;
+                let kid = (base + q) as u16;
+                slots[at & (LANES - 1)] = if descend_a { [kid, sb] } else { [sa, kid] };
+                at += ((mask >> q) & 1) as usize;
             }
+            end += at;
         }
         if at_leaves && end > 0 {
             break;

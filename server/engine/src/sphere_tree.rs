@@ -31,28 +31,33 @@ pub struct SphereTree {
     child_count: Vec<u8>,
     /// `level_start[k]` is the index of the first sphere of level k+1; one extra entry at the end.
     level_start: Vec<u32>,
-    /// The spheres again, structure-of-arrays (x, y, z, radius), padded with [`LANES`] zeros at the
-    /// end: a step tests a run of children four at a time with one vector load per coordinate (see
-    /// [`Self::lanes`]), where the 16-byte records would need a shuffle per sphere and coordinate.
-    soa: [Vec<f32>; 4],
+    /// The children of every inner sphere as one block of vectors (see [`Kids`]), by sphere index.
+    kids: Vec<Kids>,
     depth: usize,
     shape: Star,
 }
 
-/// Spheres per vector in [`SphereTree::lanes`].
+/// Spheres per vector in a [`Kids`] block.
 pub const LANES: usize = 4;
 
-/// Four consecutive spheres, one vector per coordinate.
+/// The children of one sphere, structure-of-arrays: two vectors of four per coordinate and for the
+/// radius, the lanes past the last child holding NaN (a NaN centre overlaps nothing, so unused
+/// lanes need no mask). A step tests a sphere's children with one aligned load per coordinate and
+/// no bounds check per child, where the 16-byte records would need a shuffle per sphere and axis.
 #[derive(Debug, Clone, Copy)]
-pub struct Lanes {
-    /// Centre x of each sphere.
-    pub x: Vec4,
+pub struct Kids {
+    /// Index of the first child.
+    pub first: u32,
+    /// How many children there are (at most 8).
+    pub count: u32,
+    /// Centre x of children 0-3 and 4-7.
+    pub x: [Vec4; 2],
     /// Centre y.
-    pub y: Vec4,
+    pub y: [Vec4; 2],
     /// Centre z.
-    pub z: Vec4,
+    pub z: [Vec4; 2],
     /// Radius.
-    pub r: Vec4,
+    pub r: [Vec4; 2],
 }
 
 /// One sphere as exported for clients and offline checks.
@@ -166,17 +171,36 @@ impl SphereTree {
                 child_count[pi] += 1;
             }
         }
-        let soa = std::array::from_fn(|c| {
-            let mut v: Vec<f32> = spheres.iter().map(|s| s[c]).collect();
-            v.resize(spheres.len() + LANES, 0.0);
-            v
-        });
+        let inner = level_start[depth - 1] as usize;
+        let kids = (0..inner)
+            .map(|i| {
+                let (first, count) = (first_child[i] as usize, usize::from(child_count[i]));
+                let lane = |c: usize, half: usize| {
+                    Vec4::from_array(std::array::from_fn(|q| {
+                        let k = half * LANES + q;
+                        if k < count {
+                            spheres[first + k][c]
+                        } else {
+                            f32::NAN
+                        }
+                    }))
+                };
+                Kids {
+                    first: first as u32,
+                    count: count as u32,
+                    x: [lane(0, 0), lane(0, 1)],
+                    y: [lane(1, 0), lane(1, 1)],
+                    z: [lane(2, 0), lane(2, 1)],
+                    r: [lane(3, 0), lane(3, 1)],
+                }
+            })
+            .collect();
         Ok(Self {
             spheres,
             first_child,
             child_count,
             level_start,
-            soa,
+            kids,
             depth,
             shape,
         })
@@ -208,26 +232,13 @@ impl SphereTree {
         (r.start, &self.spheres[r])
     }
 
-    /// Index of the first child of sphere `i` and how many there are (0 for leaves).
+    /// The children of inner sphere `i` as vectors.
+    ///
+    /// # Panics
+    /// If `i` is a leaf.
     #[inline]
-    pub fn child_run(&self, i: usize) -> (usize, usize) {
-        (
-            self.first_child[i] as usize,
-            usize::from(self.child_count[i]),
-        )
-    }
-
-    /// Spheres `j..j + LANES` as vectors. Lanes past the last sphere read the zero padding; the
-    /// caller masks every lane beyond the run it asked for.
-    #[inline]
-    pub fn lanes(&self, j: usize) -> Lanes {
-        let [x, y, z, r] = &self.soa;
-        Lanes {
-            x: Vec4::from_slice(&x[j..j + LANES]),
-            y: Vec4::from_slice(&y[j..j + LANES]),
-            z: Vec4::from_slice(&z[j..j + LANES]),
-            r: Vec4::from_slice(&r[j..j + LANES]),
-        }
+    pub fn kids(&self, i: usize) -> &Kids {
+        &self.kids[i]
     }
 
     /// Tree depth (number of levels).

@@ -22,6 +22,33 @@ pub const PARALLEL_MIN_BODIES: usize = 20_000;
 /// Fewest bodies worth giving to one thread; more threads than `len / this` are not started.
 const MIN_BODIES_PER_THREAD: usize = PARALLEL_MIN_BODIES / 2;
 
+/// Body indices sorted by the Morton code of their positions.
+pub fn morton_order(position: &[Vec3], lo: Vec3, side: f64) -> Vec<u32> {
+    fn spread(v: u32) -> u64 {
+        let mut x = u64::from(v) & 0x1f_ffff;
+        x = (x | x << 32) & 0x1f00000000ffff;
+        x = (x | x << 16) & 0x1f0000ff0000ff;
+        x = (x | x << 8) & 0x100f00f00f00f00f;
+        x = (x | x << 4) & 0x10c30c30c30c30c3;
+        (x | x << 2) & 0x1249249249249249
+    }
+    let scale = f64::from(1u32 << 21) / side.max(f64::MIN_POSITIVE);
+    let q = |x: f64| ((x * scale).clamp(0.0, f64::from((1u32 << 21) - 1))) as u32;
+    let mut keys: Vec<(u64, u32)> = position
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let d = *p - lo;
+            (
+                spread(q(d.x)) | spread(q(d.y)) << 1 | spread(q(d.z)) << 2,
+                i as u32,
+            )
+        })
+        .collect();
+    keys.sort_unstable();
+    keys.into_iter().map(|k| k.1).collect()
+}
+
 /// Marks a body without spin in the per-step rotation cache, so the integrator need not read
 /// `spin`. `from_scaled_axis` never yields w > 1 (w is a cosine, or NaN), so this cannot collide
 /// with a real rotation.
