@@ -7,6 +7,11 @@
 //!   N = 100,000); select one kind with e.g. `-- broad_phase/grid`.
 //! - `narrow_exact/10000`: the exact narrow phase alone over one frame's candidate pairs; the
 //!   throughput line gives sphere tests per second.
+//! - `narrow_steady/{10000,100000}/{1,2}`: the exact narrow phase over the candidate pairs of
+//!   frame 61 (after one second of motion, when the start-up overlaps are gone), with the
+//!   witnesses of frame 60, on 1 and 2 threads: what an exact frame's narrow phase costs in the
+//!   steady state (about 25 sphere tests per candidate pair, half of the pairs settled by the
+//!   root test); per sphere test in the throughput line.
 //! - `measure/{settled,deemed}/100000`: the metrics pass (counts, the fovea count over every
 //!   candidate pair, Δ and P over the deemed ones, sampled beyond 25,000) of one frame at
 //!   N = 100,000 with a fixation, every pair settled exactly or every pair deemed.
@@ -136,6 +141,38 @@ fn narrow(c: &mut Criterion) {
     g.finish();
 }
 
+fn narrow_steady(c: &mut Criterion) {
+    let mut g = c.benchmark_group("narrow_steady");
+    g.measurement_time(Duration::from_secs(8));
+    for n in [10_000u32, 100_000] {
+        let mut sim = Simulation::new(exact(n)).expect("valid");
+        for _ in 0..60 {
+            sim.step(None, &FrozenClock);
+        }
+        let (before, before_pairs) = (sim.world().clone(), sim.candidate_pairs().to_vec());
+        sim.step(None, &FrozenClock);
+        let (world, pairs) = (sim.world().clone(), sim.candidate_pairs().to_vec());
+        let tree = sim.tree().clone();
+        for threads in [1usize, 2] {
+            let mut np = NarrowPhase::default();
+            np.reset(&before_pairs);
+            np.resolve_all(&tree, &before, threads);
+            np.remember_witnesses(before.len());
+            np.reset(&pairs);
+            np.resolve_all(&tree, &world, threads);
+            g.throughput(Throughput::Elements(np.tests));
+            g.bench_function(BenchmarkId::new(n.to_string(), threads), |b| {
+                b.iter(|| {
+                    np.reset(&pairs);
+                    np.resolve_all(&tree, &world, threads);
+                    black_box(np.tests)
+                })
+            });
+        }
+    }
+    g.finish();
+}
+
 fn measure(c: &mut Criterion) {
     use foveal_engine::collider::Collider;
     use foveal_engine::{FrameBudget, FrameReport, PhaseProfile};
@@ -257,5 +294,13 @@ fn ordering(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, frame, broad, narrow, measure, ordering);
+criterion_group!(
+    benches,
+    frame,
+    broad,
+    narrow,
+    narrow_steady,
+    measure,
+    ordering
+);
 criterion_main!(benches);
