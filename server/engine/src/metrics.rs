@@ -90,6 +90,9 @@ pub struct Fovea<'a> {
     threshold_chord: f64,
     /// cos^2 of the threshold angle (for thresholds below 90 degrees).
     cos2: f64,
+    /// cos and sin of the threshold angle.
+    cos: f64,
+    sin: f64,
     /// Pixel pitch times focal length over viewing distance.
     k: f64,
 }
@@ -104,6 +107,8 @@ impl<'a> Fovea<'a> {
             fixation_ray: d.eye_ray(fixation_px),
             threshold_chord: 2.0 * (0.5 * threshold_deg.clamp(0.0, 180.0)).to_radians().sin(),
             cos2: t.cos() * t.cos(),
+            cos: t.cos(),
+            sin: t.sin(),
             k: d.pixel_pitch_cm() * viewer.focal_px() / d.viewing_distance_cm,
         }
     }
@@ -118,6 +123,40 @@ impl<'a> Fovea<'a> {
         let f = self.fixation_ray;
         let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
         dot > 0.0 && dot * dot >= self.cos2 * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
+    }
+
+    /// Whether some point within `radius` of world point `p` may be seen within the threshold:
+    /// false only if none is ([`Self::contains_point`] is false for every one of them).
+    ///
+    /// Why: the fovea holds a few percent of a frame's pairs, and testing a pair's centre needs
+    /// both bodies' positions, the second a cache miss at large N. A pair's centre lies within
+    /// half the pair's centre distance of its first body, so most pairs are ruled out from the
+    /// first body alone. In the eye-ray space of [`Self::contains_point`] (camera space with x and
+    /// y scaled by `k`) a world ball of radius r lies within a ball of radius max(k, 1) r, and the
+    /// distance from a point at angle φ from the fixation ray to the cone of half-angle θ is
+    /// |u| sin(φ - θ) = |u × f| cos θ - (u · f) sin θ (for φ - θ up to 90 degrees; beyond, this
+    /// underestimates it, which only makes the test keep more).
+    #[inline]
+    pub fn may_contain_ball(&self, p: Vec3, radius: f64) -> bool {
+        let r = p - self.viewer.eye;
+        let depth = -r.z;
+        let grow = self.k.max(1.0) * radius;
+        // Near or behind the eye the ray space is not a linear image of the world: keep.
+        if depth <= grow {
+            return true;
+        }
+        let u = [self.k * r.x, -self.k * r.y, depth];
+        let f = self.fixation_ray;
+        let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
+        let c = [
+            u[1] * f[2] - u[2] * f[1],
+            u[2] * f[0] - u[0] * f[2],
+            u[0] * f[1] - u[1] * f[0],
+        ];
+        let cross = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+        let dist = cross * self.cos - dot * self.sin;
+        // A margin far above the rounding of either test (relative 1e-15).
+        dist <= grow * (1.0 + 1e-9) + 1e-9 * depth
     }
 
     /// Whether the screen point `px` is within the threshold.
@@ -184,6 +223,21 @@ pub fn measure_within(
         .filter(|p| p.status == PairStatus::Deemed)
         .count() as u32;
     let stride = deemed.div_ceil(limit.max(1)).max(1) as usize;
+    // Candidate boxes overlap (half-size h = the root radius): the centres differ by less than
+    // 2h on each axis, so a pair's centre is within sqrt(3) h of its first body.
+    let centre_reach = 3f64.sqrt() * tree.root_radius();
+    // When every pair is tested, the filter is run once per body, in body order, and a pair reads
+    // one byte of its first body instead of its position (a cache miss in random order); when only
+    // a prefix is (a shed frame), per pair.
+    let near: Option<Vec<bool>> = fovea
+        .filter(|_| effort.fovea_pairs >= np.pairs.len())
+        .map(|f| {
+            world
+                .position
+                .iter()
+                .map(|&p| f.may_contain_ball(p, centre_reach))
+                .collect()
+        });
     let run = |lo: usize, hi: usize| -> Part {
         let mut part = Part::default();
         for i in lo..hi {
@@ -205,7 +259,12 @@ pub fn measure_within(
             if p.resolved_level > 0 {
                 part.m.per_level[p.resolved_level as usize - 1] += 1;
             }
-            if let Some(f) = fovea.filter(|_| i < effort.fovea_pairs) {
+            if let Some(f) = fovea.filter(|_| i < effort.fovea_pairs)
+                && match &near {
+                    Some(near) => near[p.a as usize],
+                    None => f.may_contain_ball(world.position[p.a as usize], centre_reach),
+                }
+            {
                 let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
                 if f.contains_point(c) {
                     part.m.foveal += 1;
@@ -321,6 +380,59 @@ mod tests {
         assert!(exact.foveal > 0 && exact.foveal < n);
         let two = measure_within(&np, &tree, &world, Some(&view), Some(&fovea), 2, limit);
         assert_eq!(two, sampled);
+    }
+
+    /// The first-body filter never drops a point of the ball that is in the fovea, rules out most
+    /// of a scene, and leaves the fovea count of a frame equal to testing every pair's centre.
+    #[test]
+    fn the_ball_filter_keeps_every_foveal_point_and_the_count_is_unchanged() {
+        let cfg = SceneConfig::paper(20_000, 9);
+        let world = World::generate(&cfg);
+        let viewer = Viewer::new(
+            &CameraConfig::default(),
+            &Display::default(),
+            world.lo,
+            cfg.volume_side(),
+        );
+        let mut rng = crate::rng::Rng::new(11);
+        let (mut ruled_out, mut balls) = (0, 0);
+        for (fx, fy, deg) in [(0.5, 0.5, 5.0), (0.05, 0.9, 5.0), (0.6, 0.35, 1.0)] {
+            let fovea = Fovea::new(&viewer, viewer.to_pixels(fx, fy), deg);
+            for p in world.position.iter().step_by(4) {
+                let radius = rng.range(0.0, 0.5);
+                let keep = fovea.may_contain_ball(*p, radius);
+                balls += 1;
+                ruled_out += usize::from(!keep);
+                for _ in 0..8 {
+                    let d = Vec3::new(
+                        rng.range(-1.0, 1.0),
+                        rng.range(-1.0, 1.0),
+                        rng.range(-1.0, 1.0),
+                    );
+                    let q = *p + d.normalize_or_zero() * radius * rng.range(0.0, 1.0);
+                    assert!(keep || !fovea.contains_point(q), "{p:?} r {radius}: {q:?}");
+                }
+            }
+        }
+        assert!(ruled_out * 10 > balls * 8, "{ruled_out} of {balls}");
+        // A frame's fovea count equals the centre test over every pair.
+        let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
+        let mut bp = BroadPhase::new(tree.root_radius(), world.lo, cfg.volume_side(), world.len());
+        let mut np = NarrowPhase::default();
+        np.reset(bp.update(&world.position));
+        let fovea = Fovea::new(&viewer, viewer.to_pixels(0.45, 0.55), 5.0);
+        let brute = np
+            .pairs
+            .iter()
+            .filter(|p| {
+                fovea.contains_point(
+                    (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5,
+                )
+            })
+            .count() as u32;
+        let m = measure(&np, &tree, &world, None, Some(&fovea), 1);
+        assert_eq!(m.foveal, brute);
+        assert!(brute > 10, "{brute}");
     }
 
     #[test]
