@@ -338,10 +338,11 @@ impl NarrowPhase {
         }
     }
 
-    /// Resolve every open pair exactly, on up to `threads` threads over contiguous runs of pairs
-    /// (the calling thread takes the first). Each pair's traversal is independent of the others',
-    /// so the states, the test count and the witnesses are bit-identical to resolving the pairs
-    /// one after another; below [`PARALLEL_MIN_PAIRS`] pairs, one thread is used.
+    /// Resolve every open pair exactly, on up to `threads` threads (the calling thread is one),
+    /// each taking the next contiguous run of pairs whenever it is free. Each pair's traversal is
+    /// independent of the others', so the states, the test count and the witnesses are
+    /// bit-identical to resolving the pairs one after another, whichever thread takes which run;
+    /// below [`PARALLEL_MIN_PAIRS`] pairs, one thread is used.
     pub fn resolve_all(&mut self, tree: &SphereTree, world: &World, threads: usize) {
         let n = self.pairs.len();
         // A pair already active keeps its list in the main arena: only a fresh frame splits.
