@@ -384,6 +384,9 @@ impl NarrowPhase {
         let next = AtomicUsize::new(0);
         let work =
             |arena: &mut Vec<[u16; 2]>, scratch: &mut [Vec<[u16; 2]>; 2], tests: &mut u64| {
+                // Counted on this thread's stack: the threads' totals share a cache line, and
+                // a count written at every level from both threads would bounce it between cores.
+                let mut count = 0u64;
                 while let Some(run) = runs.get(next.fetch_add(1, Ordering::Relaxed)) {
                     // Each run is taken by exactly one thread, so the lock is never contended.
                     let mut guard = run
@@ -396,7 +399,7 @@ impl NarrowPhase {
                         arena: &mut *arena,
                         scratch: &mut *scratch,
                         witness,
-                        tests: &mut *tests,
+                        tests: &mut count,
                     };
                     for i in 0..lane.pairs.len() {
                         if lane.pairs[i].status.is_open() {
@@ -406,6 +409,7 @@ impl NarrowPhase {
                         }
                     }
                 }
+                *tests = count;
             };
         let (first_tests, other_tests) = tests.split_at_mut(1);
         std::thread::scope(|s| {
