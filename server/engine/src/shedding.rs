@@ -55,6 +55,9 @@ const FOVEAL_HEADROOM: f64 = 1.25;
 /// what is left.
 const FOVEAL_MAX_SHARE: f64 = 0.6;
 
+/// Most the learnt tail per pair may grow in one frame (see [`Shedder::learn`]).
+const TAIL_RISE: f64 = 1.5;
+
 /// Smallest sample of deemed pairs whatever the budget: its standard error is reported.
 pub const MIN_SAMPLE: u32 = 256;
 
@@ -192,7 +195,10 @@ impl Shedder {
     /// After a frame: which regions were searched (the first `searched` of the last order), and
     /// the tail measured, `tail_ns` over `pairs` searched pairs. A tail measured after a meter that
     /// ran out is the whole tail; one measured after a narrow phase that finished early misses
-    /// the deeming, so the estimate is quick to rise and slow to fall.
+    /// the deeming, so the estimate is quick to rise and slow to fall; but one frame can raise it
+    /// by at most [`TAIL_RISE`]: on a shared machine a single frame's tail can be ten times the
+    /// usual (a page-fault storm, a preempted thread), and taken whole it made the broad phase
+    /// shed every region, the foveal ones included, for the twenty frames it took to decay.
     pub fn learn(&mut self, searched: usize, tail_ns: u64, pairs: usize) {
         self.learn_shed(searched, tail_ns, pairs);
     }
@@ -231,7 +237,7 @@ impl Shedder {
         if pairs > 0 {
             let cost = tail_ns as f64 / pairs as f64;
             self.tail_ns_per_pair = Some(match self.tail_ns_per_pair {
-                Some(old) if cost > old => cost,
+                Some(old) if cost > old => cost.min(TAIL_RISE * old),
                 Some(old) => 0.9 * old + 0.1 * cost,
                 None => cost,
             });
@@ -283,6 +289,29 @@ mod tests {
     use crate::simulation::Simulation;
     use crate::world::World;
     use std::cell::Cell;
+
+    /// One slow frame raises the learnt tail by at most TAIL_RISE; a run of them raises it to
+    /// what they cost; a fast frame lowers it slowly.
+    #[test]
+    fn one_slow_frame_does_not_take_the_next_frames_budget() {
+        let mut s = Shedder::default();
+        let deadline = 16_000_000;
+        s.learn(0, 1_000_000, 1_000); // 1 us a pair
+        assert_eq!(s.narrow_deadline(deadline, 1_000), deadline - 1_000_000);
+        s.learn(0, 20_000_000, 1_000); // a 20 ms stall
+        assert_eq!(s.narrow_deadline(deadline, 1_000), deadline - 1_500_000);
+        for _ in 0..10 {
+            s.learn(0, 20_000_000, 1_000);
+        }
+        assert_eq!(
+            s.narrow_deadline(deadline, 1_000),
+            0,
+            "a slow machine is learnt"
+        );
+        s.learn(0, 1_000_000, 1_000);
+        let after = s.narrow_deadline(deadline, 1_000);
+        assert!(after == 0, "and forgotten slowly: {after}");
+    }
 
     /// Regions of the first group hold every pair whose centre is within the fovea, wherever the
     /// viewer looks: searching only those regions lists every foveal pair.
