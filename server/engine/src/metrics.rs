@@ -88,9 +88,7 @@ pub struct Fovea<'a> {
     viewer: &'a Viewer,
     fixation_ray: [f64; 3],
     threshold_chord: f64,
-    /// cos^2 of the threshold angle (for thresholds below 90 degrees).
-    cos2: f64,
-    /// cos and sin of the threshold angle.
+    /// cos and sin of the threshold angle (for thresholds below 90 degrees).
     cos: f64,
     sin: f64,
     /// Pixel pitch times focal length over viewing distance.
@@ -106,7 +104,6 @@ impl<'a> Fovea<'a> {
             viewer,
             fixation_ray: d.eye_ray(fixation_px),
             threshold_chord: 2.0 * (0.5 * threshold_deg.clamp(0.0, 180.0)).to_radians().sin(),
-            cos2: t.cos() * t.cos(),
             cos: t.cos(),
             sin: t.sin(),
             k: d.pixel_pitch_cm() * viewer.focal_px() / d.viewing_distance_cm,
@@ -122,7 +119,7 @@ impl<'a> Fovea<'a> {
         let u = [self.k * r.x, -self.k * r.y, depth];
         let f = self.fixation_ray;
         let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
-        dot > 0.0 && dot * dot >= self.cos2 * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
+        dot > 0.0 && dot * dot >= self.cos * self.cos * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
     }
 
     /// Whether some point within `radius` of world point `p` may be seen within the threshold:

@@ -374,7 +374,6 @@ impl NarrowPhase {
         self.lane_scratch.resize_with(parts - 1, Default::default);
         let witness = &self.witness;
         let mut first_arena = std::mem::take(&mut self.arena);
-        let mut tests = vec![0u64; parts];
         let runs: Vec<Mutex<(&mut [PairState], &mut [PairFrame])>> = self
             .pairs
             .chunks_mut(size)
@@ -382,51 +381,54 @@ impl NarrowPhase {
             .map(Mutex::new)
             .collect();
         let next = AtomicUsize::new(0);
-        let work =
-            |arena: &mut Vec<[u16; 2]>, scratch: &mut [Vec<[u16; 2]>; 2], tests: &mut u64| {
-                // Counted on this thread's stack: the threads' totals share a cache line, and
-                // a count written at every level from both threads would bounce it between cores.
-                let mut count = 0u64;
-                while let Some(run) = runs.get(next.fetch_add(1, Ordering::Relaxed)) {
-                    // Each run is taken by exactly one thread, so the lock is never contended.
-                    let mut guard = run
-                        .lock()
-                        .unwrap_or_else(std::sync::PoisonError::into_inner);
-                    let (pairs, frames) = &mut *guard;
-                    let mut lane = Lane {
-                        pairs,
-                        frames,
-                        arena: &mut *arena,
-                        scratch: &mut *scratch,
-                        witness,
-                        tests: &mut count,
-                    };
-                    for i in 0..lane.pairs.len() {
-                        if lane.pairs[i].status.is_open() {
-                            lane.resolve_pair(i, tree, world);
-                            // Resolved pairs keep no list: one pair's descent at a time.
-                            lane.arena.clear();
-                        }
+        // Each thread returns its sphere tests, counted on its own stack: a shared total written
+        // at every level from both threads would bounce its cache line between the cores.
+        let work = |arena: &mut Vec<[u16; 2]>, scratch: &mut [Vec<[u16; 2]>; 2]| -> u64 {
+            let mut count = 0u64;
+            while let Some(run) = runs.get(next.fetch_add(1, Ordering::Relaxed)) {
+                // Each run is taken by exactly one thread, so the lock is never contended.
+                let mut guard = run
+                    .lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner);
+                let (pairs, frames) = &mut *guard;
+                let mut lane = Lane {
+                    pairs,
+                    frames,
+                    arena: &mut *arena,
+                    scratch: &mut *scratch,
+                    witness,
+                    tests: &mut count,
+                };
+                for i in 0..lane.pairs.len() {
+                    if lane.pairs[i].status.is_open() {
+                        lane.resolve_pair(i, tree, world);
+                        // Resolved pairs keep no list: one pair's descent at a time.
+                        lane.arena.clear();
                     }
                 }
-                *tests = count;
-            };
-        let (first_tests, other_tests) = tests.split_at_mut(1);
-        std::thread::scope(|s| {
-            for ((arena, scratch), tests) in self
+            }
+            count
+        };
+        let tests = std::thread::scope(|s| {
+            let work = &work;
+            let others: Vec<_> = self
                 .lane_arenas
                 .iter_mut()
                 .zip(self.lane_scratch.iter_mut())
-                .zip(other_tests.iter_mut())
-            {
-                let work = &work;
-                s.spawn(move || work(arena, scratch, tests));
+                .map(|(arena, scratch)| s.spawn(move || work(arena, scratch)))
+                .collect();
+            let mut tests = work(&mut first_arena, &mut self.scratch);
+            for h in others {
+                match h.join() {
+                    Ok(t) => tests += t,
+                    Err(panic) => std::panic::resume_unwind(panic),
+                }
             }
-            work(&mut first_arena, &mut self.scratch, &mut first_tests[0]);
+            tests
         });
         drop(runs);
         self.arena = first_arena;
-        self.tests += tests.iter().sum::<u64>();
+        self.tests += tests;
     }
 
     /// Step pair `i` until it is resolved (no budget).
@@ -559,11 +561,7 @@ impl Lane<'_> {
             self.arena.push([0, 0]);
             return StepOutcome::Active;
         }
-        // Descend A all the way to its leaves against B's root first, then B. B's root is its
-        // tightest bound: the octree's intermediate spheres reach out to about 1.6R, the root only
-        // to 1.11R, so pruning A against the root discards most of A's spheres before B's looser
-        // levels are opened. At N = 10,000 this needs 2.6x fewer sphere tests per frame than
-        // alternating the trees, with the same answer (both end at leaf against leaf).
+        // A to its leaves against B's root first, then B (see `next_levels`).
         let (descend_a, new_levels) = next_levels(p.levels, depth);
         let at_leaves = new_levels == [depth, depth];
         let frame = self.frames[i];

@@ -225,13 +225,6 @@ impl SphereTree {
         f..f + self.child_count[i] as usize
     }
 
-    /// Index of the first child of sphere `i` and the children's spheres (empty for leaves).
-    #[inline]
-    pub fn child_spheres(&self, i: usize) -> (usize, &[Vec4]) {
-        let r = self.children(i);
-        (r.start, &self.spheres[r])
-    }
-
     /// The children of inner sphere `i` as vectors.
     ///
     /// # Panics
