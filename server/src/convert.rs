@@ -415,10 +415,16 @@ pub fn scene_description(sim: &Simulation, frame_rate_hz: f64) -> pb::SceneDescr
 /// 1e-7 relative precision near the volume however far the scene sits from the world origin).
 pub fn poses(sim: &Simulation) -> pb::Poses {
     let w = sim.world();
+    // Body i of the message is body id i, wherever the engine keeps it.
+    let slots = sim.body_slots();
     pb::Poses::pack(
         vec3(w.lo),
-        w.position.iter().map(|p| (*p - w.lo).as_vec3().to_array()),
-        w.orientation.iter().map(|q| q.as_quat().to_array()),
+        slots
+            .iter()
+            .map(|&s| (w.position[s as usize] - w.lo).as_vec3().to_array()),
+        slots
+            .iter()
+            .map(|&s| w.orientation[s as usize].as_quat().to_array()),
     )
 }
 
@@ -426,11 +432,16 @@ pub fn poses(sim: &Simulation) -> pb::Poses {
 pub fn quantised_poses(sim: &Simulation) -> pb::QuantisedPoses {
     let w = sim.world();
     let extent = (w.hi - w.lo).max_element();
+    let slots = sim.body_slots();
     pb::QuantisedPoses::pack(
         vec3(w.lo),
         extent,
-        w.position.iter().map(|p| (*p - w.lo).as_vec3().to_array()),
-        w.orientation.iter().map(|q| q.as_quat().to_array()),
+        slots
+            .iter()
+            .map(|&s| (w.position[s as usize] - w.lo).as_vec3().to_array()),
+        slots
+            .iter()
+            .map(|&s| w.orientation[s as usize].as_quat().to_array()),
     )
 }
 
@@ -441,7 +452,7 @@ pub fn collisions(sim: &Simulation) -> pb::Collisions {
         sim.pairs()
             .iter()
             .filter(move |p| p.status == status)
-            .map(|p| (p.a, p.b))
+            .map(|p| sim.id_pair((p.a, p.b)))
     };
     pb::Collisions::pack(of(PairStatus::Colliding), of(PairStatus::Deemed))
 }
@@ -536,6 +547,7 @@ pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &pb::Fixation) -> pb::
             response_s: ns_to_s(p.response_ns),
             prioritise_s: ns_to_s(p.prioritise_ns),
             measure_s: ns_to_s(p.measure_ns),
+            renumber_s: ns_to_s(p.renumber_ns),
         }),
         dropped_before: 0,
         poses: None,

@@ -41,7 +41,8 @@ pub const DEFAULT_OUT: &str = "results/scale";
 pub const CHILD_ARG: &str = "--child";
 
 /// Pipeline order of the profiled phases; phases the profile has beyond these follow, by name.
-const PHASE_ORDER: [&str; 6] = [
+const PHASE_ORDER: [&str; 7] = [
+    "renumber",
     "integrate",
     "broad",
     "prioritise",

@@ -128,6 +128,12 @@ impl Collider {
         self.foveal_pass
     }
 
+    /// Renumber the bodies in what is kept between frames (old id `i` becomes `new_of_old[i]`):
+    /// the narrow phase's witnesses.
+    pub fn renumber(&mut self, new_of_old: &[u32]) {
+        self.narrow.renumber(new_of_old);
+    }
+
     /// The narrow phase (pair states and test count) of the last frame.
     pub fn narrow(&self) -> &NarrowPhase {
         &self.narrow

@@ -29,7 +29,7 @@ struct Export<'a> {
     spheres_per_level: Vec<usize>,
     sphere_tree: Vec<SphereRecord>,
     bodies: Vec<Body>,
-    candidate_pairs: &'a [(u32, u32)],
+    candidate_pairs: Vec<(u32, u32)>,
     exact_colliding_pairs: Vec<(u32, u32)>,
 }
 
@@ -49,17 +49,25 @@ impl Simulation {
             box_half_size: self.tree().root_radius(),
             spheres_per_level: self.tree().spheres_per_level(),
             sphere_tree: self.tree().records(),
-            bodies: w
-                .position
+            // Bodies in id order and pairs by id, wherever the engine keeps each body.
+            bodies: self
+                .body_slots()
                 .iter()
-                .zip(&w.orientation)
-                .map(|(p, q)| Body {
-                    position: p.to_array(),
-                    orientation: q.to_array(),
+                .map(|&s| Body {
+                    position: w.position[s as usize].to_array(),
+                    orientation: w.orientation[s as usize].to_array(),
                 })
                 .collect(),
-            candidate_pairs: self.candidate_pairs(),
-            exact_colliding_pairs: self.exact_colliding_pairs(),
+            candidate_pairs: self
+                .candidate_pairs()
+                .iter()
+                .map(|&p| self.id_pair(p))
+                .collect(),
+            exact_colliding_pairs: self
+                .exact_colliding_pairs()
+                .into_iter()
+                .map(|p| self.id_pair(p))
+                .collect(),
         };
         // Serialising plain data with finite floats cannot fail; NaN would be written as null.
         serde_json::to_string_pretty(&e).unwrap_or_else(|err| format!("{{\"error\":\"{err}\"}}"))

@@ -308,6 +308,42 @@ impl NarrowPhase {
         }
     }
 
+    /// Renumber the bodies of the kept witnesses (old id `i` becomes `new_of_old[i]`), so that a
+    /// renumbering between two frames costs the next frame nothing: a witness is kept under the
+    /// pair's smaller new id, its leaves swapped when the pair's order flips. Where two witnesses
+    /// land on one body the one from the larger old id is kept (deterministic; a witness only
+    /// saves tests, it never changes an answer). The last frame's pair states are dropped: they
+    /// name old ids, and the next [`Self::reset`] replaces them anyway.
+    pub fn renumber(&mut self, new_of_old: &[u32]) {
+        let old = std::mem::take(&mut self.witness);
+        self.witness = vec![NO_WITNESS; old.len()];
+        for (a, w) in old.iter().enumerate() {
+            if w.partner == NO_WITNESS.partner {
+                continue;
+            }
+            let (x, y) = (new_of_old[a], new_of_old[w.partner as usize]);
+            let (slot, kept) = if x < y {
+                (
+                    x,
+                    Witness {
+                        partner: y,
+                        leaves: w.leaves,
+                    },
+                )
+            } else {
+                (
+                    y,
+                    Witness {
+                        partner: x,
+                        leaves: [w.leaves[1], w.leaves[0]],
+                    },
+                )
+            };
+            self.witness[slot as usize] = kept;
+        }
+        self.pairs.clear();
+    }
+
     /// Whether pair `i` has a witness from last frame: its first step re-tests the leaf pair that
     /// proved a collision then, so the pair most likely collides again.
     #[inline]
@@ -919,6 +955,82 @@ mod tests {
             lanes.reset(&pairs);
             lanes.resolve_all(&tree, &world, 2);
             assert_eq!(lanes.tests, whole.tests);
+        }
+    }
+
+    /// Renumbering the bodies between two frames keeps most of what the witnesses save: every
+    /// pair (by its bodies) is resolved as without the renumbering, most witnesses are kept, and
+    /// the frame costs far fewer sphere tests than it would with the witnesses dropped. (The counts
+    /// are not equal to the frame without renumbering: a pair whose bodies swap order descends
+    /// the other tree first.)
+    #[test]
+    fn renumbered_witnesses_keep_their_savings() {
+        let cfg = SceneConfig::paper(1_500, 3);
+        let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
+        let mut world = World::generate(&cfg);
+        let mut bp = crate::broad_phase::BroadPhase::new(
+            tree.root_radius(),
+            world.lo,
+            cfg.volume_side(),
+            world.len(),
+        );
+        let mut np = NarrowPhase::default();
+        np.reset(bp.update(&world.position));
+        np.resolve_all(&tree, &world, 1);
+        np.remember_witnesses(world.len());
+        let witnesses = np.witness.iter().filter(|w| **w != NO_WITNESS).count();
+        world.integrate(cfg.dt);
+        let pairs = bp.update(&world.position).to_vec();
+        let mut kept = np.clone();
+        kept.reset(&pairs);
+        kept.resolve_all(&tree, &world, 1);
+        // A scrambled numbering: new id of old body i.
+        let n = world.len() as u32;
+        let new_of_old: Vec<u32> = (0..n).map(|i| (i * 7919 + 13) % n).collect();
+        let mut order = vec![0u32; n as usize];
+        for (old, &new) in new_of_old.iter().enumerate() {
+            order[new as usize] = old as u32;
+        }
+        let mut moved = world.clone();
+        moved.reorder(&order);
+        let map = |(a, b): (u32, u32)| {
+            let (x, y) = (new_of_old[a as usize], new_of_old[b as usize]);
+            (x.min(y), x.max(y))
+        };
+        let renamed: Vec<(u32, u32)> = pairs.iter().map(|&p| map(p)).collect();
+        let mut fresh = NarrowPhase::default();
+        fresh.reset(&renamed);
+        fresh.resolve_all(&tree, &moved, 1);
+        np.renumber(&new_of_old);
+        let renumbered = np.witness.iter().filter(|w| **w != NO_WITNESS).count();
+        assert!(
+            witnesses > 50 && renumbered * 4 >= witnesses * 3,
+            "{renumbered} of {witnesses}"
+        );
+        np.reset(&renamed);
+        np.resolve_all(&tree, &moved, 1);
+        // Here (a crowded first frame) 0.67 M tests against 1.0 M without witnesses and 0.59 M
+        // without the renumbering: a body keeps one witness, and crowded bodies lose some.
+        assert!(
+            4 * np.tests < 3 * fresh.tests,
+            "{} {} {}",
+            np.tests,
+            fresh.tests,
+            kept.tests
+        );
+        for (i, ((p, q), f)) in kept
+            .pairs
+            .iter()
+            .zip(&np.pairs)
+            .zip(&fresh.pairs)
+            .enumerate()
+        {
+            assert_eq!(
+                (map((p.a, p.b)), p.status),
+                ((q.a, q.b), q.status),
+                "pair {i}"
+            );
+            assert_eq!(q.status, f.status, "pair {i}");
         }
     }
 

@@ -9,6 +9,9 @@ use crate::fixation::Fixation;
 /// clock). `collision` = broad + prioritise + narrow + response is the paper's T.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct PhaseProfile {
+    /// Renumbering the bodies in spatial order (every [`crate::SimConfig::renumber_every`]
+    /// frames at large N; 0 in other frames).
+    pub renumber_ns: u64,
     /// Integration of positions and orientations.
     pub integrate_ns: u64,
     /// Broad phase (sweep and prune, candidate list).
@@ -32,7 +35,7 @@ impl PhaseProfile {
 
     /// The whole step: every phase, metrics included.
     pub fn step_ns(&self) -> u64 {
-        self.integrate_ns + self.collision_ns() + self.measure_ns
+        self.renumber_ns + self.integrate_ns + self.collision_ns() + self.measure_ns
     }
 }
 

@@ -33,6 +33,10 @@ pub struct Simulation {
     sim_time: f64,
     /// What a whole-frame wall-clock budget sheds, and its learnt costs.
     shedder: Shedder,
+    /// Per body slot, the body's id (its index at generation): the numbering outside the engine.
+    ids: Vec<u32>,
+    /// Per body id, its slot (the inverse of `ids`).
+    slots: Vec<u32>,
 }
 
 impl Simulation {
@@ -65,6 +69,9 @@ impl Simulation {
             }
         };
         sim.broad.update(&sim.world.position);
+        if sim.config.renumber_every > 0 {
+            sim.renumber();
+        }
         Ok(sim)
     }
 
@@ -103,14 +110,16 @@ impl Simulation {
         Ok(Self {
             collider: Collider::new(&config, &tree, &viewer)?,
             budget: FrameBudget::Unlimited,
-            tree,
-            world,
-            broad,
-            viewer,
             report: FrameReport::default(),
             next_index: 0,
             sim_time: 0.0,
             shedder: Shedder::default(),
+            ids: (0..world.len() as u32).collect(),
+            slots: (0..world.len() as u32).collect(),
+            tree,
+            world,
+            broad,
+            viewer,
             config,
         })
     }
@@ -125,9 +134,55 @@ impl Simulation {
         &self.tree
     }
 
-    /// Body state.
+    /// Body state, in slot order: slot `i` holds body [`Self::body_ids`]`[i]`. Slots are the ids
+    /// until the first renumbering (only with the grid broad phase and
+    /// [`SimConfig::renumber_every`] > 0); every pair the engine lists names slots.
     pub fn world(&self) -> &World {
         &self.world
+    }
+
+    /// Per slot, the id of the body there: its index at generation, which never changes.
+    pub fn body_ids(&self) -> &[u32] {
+        &self.ids
+    }
+
+    /// Per body id, the slot it is in now (the inverse of [`Self::body_ids`]).
+    pub fn body_slots(&self) -> &[u32] {
+        &self.slots
+    }
+
+    /// A pair of slots as the pair of body ids it names, smaller id first.
+    #[inline]
+    pub fn id_pair(&self, (a, b): (u32, u32)) -> (u32, u32) {
+        let (x, y) = (self.ids[a as usize], self.ids[b as usize]);
+        (x.min(y), x.max(y))
+    }
+
+    /// Whether the bodies are ever renumbered: only where the broad phase keeps a spatial order.
+    fn renumbers(&self) -> bool {
+        self.config.renumber_every > 0 && self.broad.spatial_order().is_some()
+    }
+
+    /// Renumber the bodies in the broad phase's spatial order (the grid's cell order at its last
+    /// update): every per-body array moves together, the broad phase's kept pairs and the narrow
+    /// phase's witnesses follow, and [`Self::body_ids`] keeps the outside numbering. No answer
+    /// changes: which pairs collide does not depend on the numbering (the order in which the
+    /// response treats them does, as it depends on the broad phase's order anyway).
+    fn renumber(&mut self) {
+        let Some(order) = self.broad.spatial_order() else {
+            return;
+        };
+        let mut new_of_old = vec![0u32; order.len()];
+        for (new, &old) in order.iter().enumerate() {
+            new_of_old[old as usize] = new as u32;
+        }
+        self.world.reorder(&order);
+        self.broad.renumber(&new_of_old);
+        self.collider.renumber(&new_of_old);
+        self.ids = order.iter().map(|&old| self.ids[old as usize]).collect();
+        for (slot, &id) in self.ids.iter().enumerate() {
+            self.slots[id as usize] = slot as u32;
+        }
     }
 
     /// Camera and display.
@@ -188,9 +243,17 @@ impl Simulation {
             (FrameBudget::Wall(ns), FrameBudget::Deadline(d)) => Some((d, ns)),
             _ => None,
         };
+        if self.next_index > 0
+            && self.renumbers()
+            && self.next_index % u64::from(self.config.renumber_every) == 0
+        {
+            self.renumber();
+        }
+        let tr = clock.now_ns();
+        profile.renumber_ns = tr - t0;
         self.integrate();
         let t1 = clock.now_ns();
-        profile.integrate_ns = t1 - t0;
+        profile.integrate_ns = t1 - tr;
 
         let fixation_rejected = fixation.is_some_and(|f| !f.is_usable());
         let fixation = fixation.filter(Fixation::is_usable);
@@ -337,4 +400,102 @@ fn missed_pairs(searched: &[(u32, u32)], mut all: Vec<(u32, u32)>) -> u32 {
     all.iter()
         .filter(|p| have.binary_search(p).is_err())
         .count() as u32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::broad_phase::BroadPhaseKind;
+    use crate::config::SceneConfig;
+    use std::collections::BTreeSet;
+
+    fn grid_scene(renumber_every: u32, threads: u32, budget: BudgetSpec) -> Simulation {
+        Simulation::new(SimConfig {
+            scene: SceneConfig::paper(3_000, 2),
+            broad_phase: BroadPhaseKind::Grid,
+            renumber_every,
+            threads,
+            budget,
+            ..SimConfig::default()
+        })
+        .expect("valid")
+    }
+
+    fn colliding_by_id(sim: &Simulation) -> BTreeSet<(u32, u32)> {
+        sim.exact_colliding_pairs()
+            .into_iter()
+            .map(|p| sim.id_pair(p))
+            .collect()
+    }
+
+    /// Renumbering moves bodies, not answers: the renumbered scene is the same scene body for
+    /// body (by id) and finds the same colliding pairs by id (not at the same cost: a pair whose
+    /// bodies swap order descends the other tree first).
+    #[test]
+    fn renumbering_moves_bodies_not_answers() {
+        let mut moved = grid_scene(2, 1, BudgetSpec::Exact);
+        let mut still = grid_scene(0, 1, BudgetSpec::Exact);
+        let ids = moved.body_ids().to_vec();
+        assert!(ids.iter().enumerate().any(|(s, &id)| s as u32 != id));
+        let mut seen = vec![false; ids.len()];
+        for (slot, &id) in ids.iter().enumerate() {
+            assert!(!seen[id as usize]);
+            seen[id as usize] = true;
+            assert_eq!(moved.body_slots()[id as usize], slot as u32);
+            let (a, b) = (moved.world(), still.world());
+            let (s, i) = (slot, id as usize);
+            assert_eq!(
+                (a.position[s], a.velocity[s], a.orientation[s], a.spin[s]),
+                (b.position[i], b.velocity[i], b.orientation[i], b.spin[i])
+            );
+        }
+        assert_eq!(still.body_ids(), still.body_slots());
+        // The first frame sees identical bodies: the same collisions.
+        moved.step(None, &FrozenClock);
+        still.step(None, &FrozenClock);
+        assert_eq!(colliding_by_id(&moved), colliding_by_id(&still));
+        // Later frames renumber again (every second frame); the lists stay consistent with the
+        // bodies they name.
+        for _ in 0..5 {
+            moved.step(None, &FrozenClock);
+            let w = moved.world();
+            let listed: BTreeSet<(u32, u32)> = moved.candidate_pairs().iter().copied().collect();
+            let brute: BTreeSet<(u32, u32)> =
+                crate::broad_phase::brute_force_pairs(&w.position, moved.tree().root_radius())
+                    .into_iter()
+                    .collect();
+            assert_eq!(listed, brute);
+            let resolved: BTreeSet<(u32, u32)> = moved
+                .pairs()
+                .iter()
+                .filter(|p| p.status.is_collision())
+                .map(|p| (p.a, p.b))
+                .collect();
+            assert_eq!(
+                resolved,
+                moved.exact_colliding_pairs().into_iter().collect()
+            );
+        }
+        assert!(
+            moved.body_ids() != ids.as_slice(),
+            "renumbered as bodies moved"
+        );
+    }
+
+    /// With renumbering, frame reports and bodies are still bit-identical on 1 and 2 threads.
+    #[test]
+    fn renumbering_is_deterministic_across_threads() {
+        let budget = BudgetSpec::SphereTests(20_000);
+        let (mut one, mut two) = (grid_scene(3, 1, budget), grid_scene(3, 2, budget));
+        for _ in 0..8 {
+            let (a, b) = (
+                one.step(None, &FrozenClock).clone(),
+                two.step(None, &FrozenClock).clone(),
+            );
+            assert_eq!(a, b);
+        }
+        assert_eq!(one.body_ids(), two.body_ids());
+        assert_eq!(one.world().position, two.world().position);
+        assert_eq!(one.world().velocity, two.world().velocity);
+    }
 }

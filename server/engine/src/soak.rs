@@ -109,8 +109,12 @@ pub fn soak(
     // frame (random placement overlaps deeply: exempt until it first separates), centre distance at
     // the start of the streak, and whether it was already counted as stuck.
     let mut streak: HashMap<(u32, u32), Streak> = HashMap::new();
-    let mut prev_positions: Vec<Vec3> = sim.world().position.clone();
-    let mut prev_velocities: Vec<Vec3> = sim.world().velocity.clone();
+    // Bodies and pairs are followed by id: at large N the engine renumbers its slots now and then.
+    let by_id = |sim: &Simulation, v: &[Vec3]| -> Vec<Vec3> {
+        sim.body_slots().iter().map(|&s| v[s as usize]).collect()
+    };
+    let mut prev_positions: Vec<Vec3> = by_id(&sim, &sim.world().position);
+    let mut prev_velocities: Vec<Vec3> = by_id(&sim, &sim.world().velocity);
     let mut prev_colliding: std::collections::HashSet<(u32, u32)> = Default::default();
     for f in 0..frames {
         sim.step(None, &FrozenClock);
@@ -144,16 +148,17 @@ pub fn soak(
             .pairs()
             .iter()
             .filter(|p| p.status == PairStatus::Colliding)
-            .map(|p| (p.a, p.b))
+            .map(|p| sim.id_pair((p.a, p.b)))
             .collect();
+        let (position, velocity) = (by_id(&sim, &w.position), by_id(&sim, &w.velocity));
         report.collisions += colliding.len() as u64;
         streak.retain(|k, _| colliding.contains(k));
         for &k in &colliding {
             let (a, b) = (k.0 as usize, k.1 as usize);
-            let dist = (w.position[b] - w.position[a]).length();
+            let dist = (position[b] - position[a]).length();
             // Velocities changed by anything but an exchange within the pair: a third body or a wall.
             let own = |i: usize, j: usize| {
-                w.velocity[i] == prev_velocities[i] || w.velocity[i] == prev_velocities[j]
+                velocity[i] == prev_velocities[i] || velocity[i] == prev_velocities[j]
             };
             let disturbed = !own(a, b) || !own(b, a);
             let e = streak.entry(k).or_insert(Streak {
@@ -181,19 +186,20 @@ pub fn soak(
         }
         // Tunnelling: among this step's candidates, centres whose closest approach during the
         // (linear) step fell within two core radii must have collided, yet neither end did.
-        for &(a, b) in sim.candidate_pairs() {
+        for &pair in sim.candidate_pairs() {
+            let (a, b) = sim.id_pair(pair);
             if colliding.contains(&(a, b)) || prev_colliding.contains(&(a, b)) {
                 continue;
             }
             let (a, b) = (a as usize, b as usize);
             let d0 = prev_positions[b] - prev_positions[a];
-            let d1 = w.position[b] - w.position[a];
+            let d1 = position[b] - position[a];
             if closest_approach(d0, d1) < core_reach {
                 report.tunnelled += 1;
             }
         }
-        prev_positions.clone_from(&w.position);
-        prev_velocities.clone_from(&w.velocity);
+        prev_positions = position;
+        prev_velocities = velocity;
         prev_colliding = colliding;
         if (f + 1) % 1000 == 0 {
             progress(f + 1);

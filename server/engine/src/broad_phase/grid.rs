@@ -258,6 +258,33 @@ impl Grid {
         self.bodies
     }
 
+    /// Body ids in cell order (cell, then id) as of the last sort: a spatial order in which a
+    /// body's candidates lie in a few forward streams (its row, the next row and three rows of the
+    /// next z-plane), which is why the simulation renumbers its bodies in it.
+    pub(super) fn cell_order(&self) -> Vec<u32> {
+        self.sorted[..self.bodies].iter().map(|s| s.id).collect()
+    }
+
+    /// Renumber the bodies: old id `i` becomes `new_of_old[i]`. What persists between updates and
+    /// names bodies (the regions' kept pairs, the last pairs, the sort) is rewritten, each pair as
+    /// (smaller, larger); the next update sorts again from the positions it is given.
+    pub(super) fn renumber(&mut self, new_of_old: &[u32]) {
+        let map = |(a, b): (u32, u32)| {
+            let (x, y) = (new_of_old[a as usize], new_of_old[b as usize]);
+            (x.min(y), x.max(y))
+        };
+        for pairs in &mut self.region_pairs {
+            pairs.iter_mut().for_each(|p| *p = map(*p));
+        }
+        self.pairs
+            .as_mut_slice()
+            .iter_mut()
+            .for_each(|p| *p = map(*p));
+        for s in &mut self.sorted[..self.bodies] {
+            s.id = new_of_old[s.id as usize];
+        }
+    }
+
     #[cfg(test)]
     pub(super) fn pair_storage(&self) -> usize {
         self.pairs.capacity()

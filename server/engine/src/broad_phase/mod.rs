@@ -244,6 +244,34 @@ impl BroadPhase {
         }
     }
 
+    /// A spatial order of the bodies as of the last update, for keeping bodies that are near in
+    /// space near in memory: the grid's cell order (see [`crate::Simulation`]'s renumbering).
+    /// None for sweep and prune, whose per-column lists are not one order and whose persistent
+    /// state is kept per body.
+    pub fn spatial_order(&self) -> Option<Vec<u32>> {
+        match &self.inner {
+            Inner::SweepAndPrune(_) => None,
+            Inner::Grid(g) => Some(g.cell_order()),
+        }
+    }
+
+    /// Renumber the bodies (old id `i` becomes `new_of_old[i]`) in everything kept between
+    /// updates. Only the grid can be renumbered ([`Self::spatial_order`] is `Some`).
+    ///
+    /// # Panics
+    /// For sweep and prune, or if `new_of_old` does not hold one entry per body.
+    pub fn renumber(&mut self, new_of_old: &[u32]) {
+        match &mut self.inner {
+            Inner::SweepAndPrune(_) => {
+                panic!("sweep and prune keeps per-body state: not renumbered")
+            }
+            Inner::Grid(g) => {
+                assert_eq!(new_of_old.len(), g.bodies(), "renumber: wrong body count");
+                g.renumber(new_of_old);
+            }
+        }
+    }
+
     /// Panic unless the state is consistent with `positions` (used by tests).
     pub fn assert_well_formed(&self, positions: &[Vec3]) {
         match &self.inner {
@@ -327,6 +355,10 @@ impl PairBuffer {
 
     fn as_slice(&self) -> &[(u32, u32)] {
         &self.buf[..self.len]
+    }
+
+    fn as_mut_slice(&mut self) -> &mut [(u32, u32)] {
+        &mut self.buf[..self.len]
     }
 
     fn assert_well_formed(&self) {
