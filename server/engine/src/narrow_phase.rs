@@ -44,6 +44,12 @@ pub struct PairFrame {
 }
 
 impl PairFrame {
+    /// A placeholder (B's frame is A's) for storage not yet written.
+    const IDENTITY: Self = Self {
+        m: LMat3::IDENTITY,
+        t: LVec3::ZERO,
+    };
+
     /// Relative frame of bodies `a` and `b`. The translation is formed in f64 before rounding, so a
     /// pair far from the origin is as exact as one at it.
     #[inline]
@@ -243,8 +249,11 @@ const NO_WITNESS: Witness = Witness {
 pub struct NarrowPhase {
     /// Pair states, in broad-phase order.
     pub pairs: Vec<PairState>,
-    /// Relative frame of each pair, index-parallel to `pairs`; written by a pair's first step and
-    /// read only after it, so it is never reset (a frame's reset writes the small states alone).
+    /// Relative frame of each pair, index-parallel to `pairs`, for schedulers that interleave
+    /// pairs; written by a pair's first step and read only after it, so it is never reset (a
+    /// frame's reset writes the small states alone). Grown by the first step of a frame: an exact
+    /// frame resolves each pair in one go and keeps its frame on the stack instead, which at a
+    /// million bodies is 150 MB never allocated.
     frames: Vec<PairFrame>,
     arena: Vec<[u16; 2]>,
     /// Per body: a partner it collided with last frame and the leaf pair that proved it.
@@ -280,14 +289,10 @@ impl NarrowPhase {
         if self.arena.capacity() > 4 * used {
             self.arena.shrink_to(2 * used);
         }
-        if self.frames.len() < self.pairs.len() {
-            self.frames.resize(
-                self.pairs.len(),
-                PairFrame {
-                    m: LMat3::IDENTITY,
-                    t: LVec3::ZERO,
-                },
-            );
+        // Like the arena: storage for one pathological frame's pairs is not kept for good.
+        if self.frames.capacity() > 4 * self.pairs.len().max(ARENA_KEEP) {
+            self.frames.truncate(self.pairs.len());
+            self.frames.shrink_to(2 * self.pairs.len());
         }
         self.arena.clear();
         self.tests = 0;
@@ -362,11 +367,16 @@ impl NarrowPhase {
         self.lane().step(i, tree, world)
     }
 
-    /// The whole state as one lane.
+    /// The whole state as one lane, with a frame stored per pair (pairs may be stepped in any
+    /// order).
     fn lane(&mut self) -> Lane<'_> {
+        if self.frames.len() < self.pairs.len() {
+            self.frames.resize(self.pairs.len(), PairFrame::IDENTITY);
+        }
         Lane {
             pairs: &mut self.pairs,
             frames: &mut self.frames,
+            one_frame: false,
             arena: &mut self.arena,
             scratch: &mut self.scratch,
             witness: &self.witness,
@@ -388,16 +398,33 @@ impl NarrowPhase {
         } else {
             threads.clamp(1, 64)
         };
-        if parts == 1 {
+        if parts == 1 && !fresh {
             let mut lane = self.lane();
+            for i in 0..n {
+                if lane.pairs[i].status.is_open() {
+                    lane.resolve_pair(i, tree, world);
+                }
+            }
+            return;
+        }
+        if parts == 1 {
+            // A fresh frame resolves one pair after another, so one frame slot serves them all.
+            let mut slot = [PairFrame::IDENTITY];
+            let mut lane = Lane {
+                pairs: &mut self.pairs,
+                frames: &mut slot,
+                one_frame: true,
+                arena: &mut self.arena,
+                scratch: &mut self.scratch,
+                witness: &self.witness,
+                tests: &mut self.tests,
+            };
             for i in 0..n {
                 if lane.pairs[i].status.is_open() {
                     lane.resolve_pair(i, tree, world);
                     // A resolved pair keeps no list; on a fresh frame no other pair has one, so
                     // the arena holds one pair's descent at a time, not the frame's.
-                    if fresh {
-                        lane.arena.clear();
-                    }
+                    lane.arena.clear();
                 }
             }
             return;
@@ -410,12 +437,8 @@ impl NarrowPhase {
         self.lane_scratch.resize_with(parts - 1, Default::default);
         let witness = &self.witness;
         let mut first_arena = std::mem::take(&mut self.arena);
-        let runs: Vec<Mutex<(&mut [PairState], &mut [PairFrame])>> = self
-            .pairs
-            .chunks_mut(size)
-            .zip(self.frames[..n].chunks_mut(size))
-            .map(Mutex::new)
-            .collect();
+        let runs: Vec<Mutex<&mut [PairState]>> =
+            self.pairs.chunks_mut(size).map(Mutex::new).collect();
         let next = AtomicUsize::new(0);
         // Each thread returns its sphere tests, counted on its own stack: a shared total written
         // at every level from both threads would bounce its cache line between the cores.
@@ -426,10 +449,11 @@ impl NarrowPhase {
                 let mut guard = run
                     .lock()
                     .unwrap_or_else(std::sync::PoisonError::into_inner);
-                let (pairs, frames) = &mut *guard;
+                let mut slot = [PairFrame::IDENTITY];
                 let mut lane = Lane {
-                    pairs,
-                    frames,
+                    pairs: &mut guard,
+                    frames: &mut slot,
+                    one_frame: true,
                     arena: &mut *arena,
                     scratch: &mut *scratch,
                     witness,
@@ -521,7 +545,11 @@ impl NarrowPhase {
         let sb = tree.sphere(p.last[1] as usize);
         let basis = glam::Mat3::from(world.basis[p.a as usize]).as_dmat3();
         let local_a = LVec3::from_vec4(sa).as_dvec3();
-        let local_b = self.frames[i].map(sb).as_dvec3();
+        // The pair's frame, computed again (as its first step did, bit for bit): an exact frame
+        // does not keep it.
+        let local_b = PairFrame::new(world, p.a as usize, p.b as usize)
+            .map(sb)
+            .as_dvec3();
         let (ca, cb) = (pa + basis * local_a, pa + basis * local_b);
         Evidence {
             center_a: ca,
@@ -537,6 +565,8 @@ impl NarrowPhase {
 struct Lane<'a> {
     pairs: &'a mut [PairState],
     frames: &'a mut [PairFrame],
+    /// Pairs are resolved one at a time, each in one go: every pair's frame is `frames[0]`.
+    one_frame: bool,
     arena: &'a mut Vec<[u16; 2]>,
     scratch: &'a mut [Vec<[u16; 2]>; 2],
     witness: &'a [Witness],
@@ -544,6 +574,12 @@ struct Lane<'a> {
 }
 
 impl Lane<'_> {
+    /// Where pair `i`'s frame is kept.
+    #[inline]
+    fn frame_slot(&self, i: usize) -> usize {
+        if self.one_frame { 0 } else { i }
+    }
+
     /// Advance pair `i` by one level of one tree. A pair that collided last frame first re-tests the
     /// leaf pair that proved it (one test); if that still overlaps, the pair is resolved colliding
     /// at the leaves, exactly as its full descent would have.
@@ -558,7 +594,8 @@ impl Lane<'_> {
             let mut framed = false;
             if let Some(w) = self.witness.get(a).filter(|w| w.partner == p.b) {
                 let frame = PairFrame::new(world, a, b);
-                self.frames[i] = frame;
+                let k = self.frame_slot(i);
+                self.frames[k] = frame;
                 framed = true;
                 let (la, lb) = (
                     tree.sphere(w.leaves[0] as usize),
@@ -584,7 +621,7 @@ impl Lane<'_> {
                 return resolve(st, PairStatus::Separate, 1);
             }
             if !framed {
-                self.frames[i] = PairFrame::new(world, a, b);
+                self.frames[if self.one_frame { 0 } else { i }] = PairFrame::new(world, a, b);
             }
             st.last = [0, 0];
             st.levels = [1, 1];
@@ -600,7 +637,7 @@ impl Lane<'_> {
         // A to its leaves against B's root first, then B (see `next_levels`).
         let (descend_a, new_levels) = next_levels(p.levels, depth);
         let at_leaves = new_levels == [depth, depth];
-        let frame = self.frames[i];
+        let frame = self.frames[self.frame_slot(i)];
         let (lo, hi) = (p.list_start as usize, (p.list_start + p.list_len) as usize);
         // The arena is grown to the worst case (8 children per entry) and cut back after.
         let start = self.arena.len();
@@ -637,7 +674,7 @@ impl Lane<'_> {
         }
         let depth = tree.depth() as u8;
         let p = self.pairs[i];
-        let frame = self.frames[i];
+        let frame = self.frames[self.frame_slot(i)];
         let [cur, next] = &mut *self.scratch;
         let (lo, hi) = (p.list_start as usize, (p.list_start + p.list_len) as usize);
         // Both lists only ever grow (their lengths are kept, the live part is tracked in `len`),

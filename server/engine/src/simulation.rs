@@ -243,13 +243,16 @@ impl Simulation {
             (FrameBudget::Wall(ns), FrameBudget::Deadline(d)) => Some((d, ns)),
             _ => None,
         };
-        if self.next_index > 0
+        // The clock is read again only in a frame that renumbers: a read is not free.
+        let tr = if self.next_index > 0
             && self.renumbers()
             && self.next_index % u64::from(self.config.renumber_every) == 0
         {
             self.renumber();
-        }
-        let tr = clock.now_ns();
+            clock.now_ns()
+        } else {
+            t0
+        };
         profile.renumber_ns = tr - t0;
         self.integrate();
         let t1 = clock.now_ns();
