@@ -2,9 +2,11 @@
 //!
 //! `cargo bench -p foveal-engine --bench step`
 //! - `frame_exact/10000`: one whole frame (integrate, broad, narrow to completion, response).
-//! - `broad_phase/{sap,grid,grid-2t}/{10000,100000,1000000}`: one broad-phase update after a step
-//!   of motion, per frame, for sweep and prune, the grid, and the grid on 2 threads (`grid-2t`, from
-//!   N = 100,000); select one kind with e.g. `-- broad_phase/grid`.
+//! - `broad_phase/{sap,grid,grid-2t,grid-cells,grid-cells-2t}/{10000,100000,1000000}`: one
+//!   broad-phase update after a step of motion, per frame, for sweep and prune, the grid, and the
+//!   grid on 2 threads (`-2t`, from N = 100,000), with the bodies numbered as generated (random
+//!   in space) or in the grid's cell order (`grid-cells`, as a simulation renumbers them at large
+//!   N); select one kind with e.g. `-- broad_phase/grid/`.
 //! - `narrow_exact/10000`: the exact narrow phase alone over one frame's candidate pairs; the
 //!   throughput line gives sphere tests per second.
 //! - `narrow_steady/{10000,100000}/{1,2}`: the exact narrow phase over the candidate pairs of
@@ -82,25 +84,47 @@ fn broad(c: &mut Criterion) {
         world.integrate(cfg.dt);
         let after = world.position.clone();
         g.throughput(Throughput::Elements(u64::from(n)));
+        // The same frames with the bodies numbered in the grid's cell order, as a simulation
+        // keeps them at large N (`SimConfig::renumber_every`).
+        let half = tree.root_radius();
+        let order = {
+            let mut bp = BroadPhase::with_kind(
+                BroadPhaseKind::Grid,
+                half,
+                world.lo,
+                cfg.volume_side(),
+                world.len(),
+            );
+            bp.update(&before);
+            bp.spatial_order().expect("the grid has an order")
+        };
+        let renumbered: [Vec<_>; 2] =
+            [&before, &after].map(|v| order.iter().map(|&i| v[i as usize]).collect());
         let kinds = [
-            ("sap", BroadPhaseKind::SweepAndPrune, 1),
-            ("grid", BroadPhaseKind::Grid, 1),
-            ("grid-2t", BroadPhaseKind::Grid, 2),
+            ("sap", BroadPhaseKind::SweepAndPrune, 1, false),
+            ("grid", BroadPhaseKind::Grid, 1, false),
+            ("grid-2t", BroadPhaseKind::Grid, 2, false),
+            ("grid-cells", BroadPhaseKind::Grid, 1, true),
+            ("grid-cells-2t", BroadPhaseKind::Grid, 2, true),
         ];
-        for (id, kind, threads) in kinds {
+        for (id, kind, threads, in_cells) in kinds {
             if threads > 1 && n < 100_000 {
                 continue;
             }
-            let half = tree.root_radius();
+            let (before, after) = if in_cells {
+                (&renumbered[0], &renumbered[1])
+            } else {
+                (&before, &after)
+            };
             let mut bp =
                 BroadPhase::with_kind(kind, half, world.lo, cfg.volume_side(), world.len());
             bp.set_threads(threads);
-            bp.update(&before);
+            bp.update(before);
             let mut flip = false;
             g.bench_function(BenchmarkId::new(id, n), |b| {
                 b.iter(|| {
                     flip = !flip;
-                    black_box(bp.update(if flip { &after } else { &before }).len())
+                    black_box(bp.update(if flip { after } else { before }).len())
                 })
             });
         }
