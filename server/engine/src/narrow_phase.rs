@@ -255,6 +255,8 @@ pub struct NarrowPhase {
     /// frame resolves each pair in one go and keeps its frame on the stack instead, which at a
     /// million bodies is 150 MB never allocated.
     frames: Vec<PairFrame>,
+    /// `frames` holds this frame's pair frames (some pair was stepped through [`Self::lane`]).
+    frames_live: bool,
     arena: Vec<[u16; 2]>,
     /// Per body: a partner it collided with last frame and the leaf pair that proved it.
     witness: Vec<Witness>,
@@ -295,6 +297,7 @@ impl NarrowPhase {
             self.frames.shrink_to(2 * self.pairs.len());
         }
         self.arena.clear();
+        self.frames_live = false;
         self.tests = 0;
     }
 
@@ -373,6 +376,7 @@ impl NarrowPhase {
         if self.frames.len() < self.pairs.len() {
             self.frames.resize(self.pairs.len(), PairFrame::IDENTITY);
         }
+        self.frames_live = true;
         Lane {
             pairs: &mut self.pairs,
             frames: &mut self.frames,
@@ -407,6 +411,8 @@ impl NarrowPhase {
             }
             return;
         }
+        // From here on pairs keep no frame: [`Self::evidence`] computes it again.
+        self.frames_live = false;
         if parts == 1 {
             // A fresh frame resolves one pair after another, so one frame slot serves them all.
             let mut slot = [PairFrame::IDENTITY];
@@ -545,11 +551,14 @@ impl NarrowPhase {
         let sb = tree.sphere(p.last[1] as usize);
         let basis = glam::Mat3::from(world.basis[p.a as usize]).as_dmat3();
         let local_a = LVec3::from_vec4(sa).as_dvec3();
-        // The pair's frame, computed again (as its first step did, bit for bit): an exact frame
-        // does not keep it.
-        let local_b = PairFrame::new(world, p.a as usize, p.b as usize)
-            .map(sb)
-            .as_dvec3();
+        // The pair's frame as its first step stored it, or computed again (bit for bit the same)
+        // where the frame was resolved pair by pair and kept none.
+        let frame = if self.frames_live {
+            self.frames[i]
+        } else {
+            PairFrame::new(world, p.a as usize, p.b as usize)
+        };
+        let local_b = frame.map(sb).as_dvec3();
         let (ca, cb) = (pa + basis * local_a, pa + basis * local_b);
         Evidence {
             center_a: ca,

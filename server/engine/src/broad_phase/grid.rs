@@ -61,10 +61,15 @@ const MAX_BUCKET_SHIFT: u32 = 24;
 const TARGET_BUCKETS: usize = 32;
 
 /// The regions a frame budget sheds tile the screen-facing x-y plane in at most this many columns
-/// and rows (each region spans the volume's whole depth): enough that the regions around a 5-degree
-/// fovea are a few percent of the scene at every N measured, few enough that ordering them costs
-/// microseconds.
+/// and rows, and the depth in at most [`REGION_SLABS`] slabs: few enough that ordering them costs
+/// tens of microseconds.
 const REGION_TILES: usize = 16;
+
+/// Slabs of the depth (z) per region column. A column through the whole depth projects, under
+/// perspective, onto a wedge from its near end's screen position towards the screen centre, so
+/// with whole columns 112 of 256 regions could hold a pair within 5 degrees of a central
+/// fixation; cut into slabs, only the slabs the fovea's cone passes through do.
+const REGION_SLABS: usize = 4;
 
 /// Fewest bodies worth handing to one thread: starting a scoped thread costs tens of
 /// microseconds, about the grid's time for this many bodies.
@@ -140,9 +145,9 @@ pub(super) struct Grid {
     /// Output of partitions 1.. when running on several threads.
     partition_pairs: Vec<PairBuffer>,
     /// x-cells and y-rows per region, and regions per axis (x, then y).
-    tile: [usize; 2],
-    tiles: [usize; 2],
-    /// Each region's box (its cells over the whole depth).
+    tile: [usize; 3],
+    tiles: [usize; 3],
+    /// Each region's box (its cells: a column of x-y tiles over a slab of the depth).
     regions: Vec<Region>,
     /// Each region's pairs as of the last update that searched it.
     region_pairs: Vec<Vec<(u32, u32)>>,
@@ -187,29 +192,33 @@ impl Grid {
         let per_bucket = cells.div_ceil(TARGET_BUCKETS).max(1);
         let bucket_shift = (usize::BITS - (per_bucket - 1).leading_zeros()).min(MAX_BUCKET_SHIFT);
         let buckets = cells.div_ceil(1 << bucket_shift);
-        let tile = [nx.div_ceil(REGION_TILES), n.div_ceil(REGION_TILES)];
-        let tiles = [nx.div_ceil(tile[0]), n.div_ceil(tile[1])];
-        let mut regions = Vec::with_capacity(tiles[0] * tiles[1]);
-        for ty in 0..tiles[1] {
-            for tx in 0..tiles[0] {
-                let x = [tx * tile[0], ((tx + 1) * tile[0]).min(nx)];
-                let y = [ty * tile[1], ((ty + 1) * tile[1]).min(n)];
-                regions.push(Region {
-                    lo: lo
-                        + Vec3::new(
-                            x[0] as f64 * side / nx as f64,
-                            y[0] as f64 * side / n as f64,
-                            0.0,
-                        ),
-                    hi: lo
-                        + Vec3::new(
-                            x[1] as f64 * side / nx as f64,
-                            y[1] as f64 * side / n as f64,
-                            side,
-                        ),
-                });
-            }
-        }
+        let tile = [
+            nx.div_ceil(REGION_TILES),
+            n.div_ceil(REGION_TILES),
+            n.div_ceil(REGION_SLABS),
+        ];
+        let tiles = [
+            nx.div_ceil(tile[0]),
+            n.div_ceil(tile[1]),
+            n.div_ceil(tile[2]),
+        ];
+        let count = tiles[0] * tiles[1] * tiles[2];
+        let regions = (0..count)
+            .map(|r| {
+                let [x, y, z] = region_cells(tile, tiles, [nx, n, n], r);
+                let at = |c: [usize; 3]| {
+                    lo + Vec3::new(
+                        c[0] as f64 * side / nx as f64,
+                        c[1] as f64 * side / n as f64,
+                        c[2] as f64 * side / n as f64,
+                    )
+                };
+                Region {
+                    lo: at([x[0], y[0], z[0]]),
+                    hi: at([x[1], y[1], z[1]]),
+                }
+            })
+            .collect::<Vec<_>>();
         Self {
             reach,
             dims,
@@ -358,12 +367,10 @@ impl Grid {
                 break;
             }
             searched[r] = true;
-            let (tx, ty) = (r % self.tiles[0], r / self.tiles[0]);
-            let x = [tx * self.tile[0], ((tx + 1) * self.tile[0]).min(nx)];
-            let y = [ty * self.tile[1], ((ty + 1) * self.tile[1]).min(n)];
+            let [x, y, z] = region_cells(self.tile, self.tiles, [nx, n, n], r);
             let buf = &mut self.region_pairs[r];
             let mut len = 0;
-            for iz in 0..n {
+            for iz in z[0]..z[1] {
                 for iy in y[0]..y[1] {
                     len = rows.span(iz, iy, x[0], x[1], buf, len);
                 }
@@ -659,6 +666,22 @@ impl Rows<'_> {
         }
         len
     }
+}
+
+/// The cells of region `r` ([x0, x1), [y0, y1), [z0, z1)), regions numbered x fastest, then y,
+/// then z, with `tile` cells per region and `tiles` regions per axis over `cells` cells per axis.
+fn region_cells(
+    tile: [usize; 3],
+    tiles: [usize; 3],
+    cells: [usize; 3],
+    r: usize,
+) -> [[usize; 2]; 3] {
+    let t = [
+        r % tiles[0],
+        (r / tiles[0]) % tiles[1],
+        r / (tiles[0] * tiles[1]),
+    ];
+    std::array::from_fn(|a| [t[a] * tile[a], ((t[a] + 1) * tile[a]).min(cells[a])])
 }
 
 /// Whether the boxes of two slots overlap (touching counts), as [`super::brute_force_pairs`] has

@@ -46,8 +46,8 @@ pub const SHRINK_AFTER_FRAMES: u32 = 120;
 /// Pairs of headroom the shrink rule always allows, so small scenes never reallocate.
 pub const PAIR_SLACK: usize = 1024;
 
-/// A column of the grid through the volume's whole depth: the unit of broad-phase work a
-/// whole-frame budget sheds (see [`BroadPhase::update_in_order`]). Bodies whose cell is in the
+/// A block of the grid's cells (a column over a slab of the volume's depth): the unit of
+/// broad-phase work a whole-frame budget sheds (see [`BroadPhase::update_in_order`]). Bodies whose cell is in the
 /// region search it; the pairs they find may reach into a neighbouring region.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Region {
@@ -242,6 +242,11 @@ impl BroadPhase {
             Inner::SweepAndPrune(s) => s.pairs(),
             Inner::Grid(g) => g.pairs(),
         }
+    }
+
+    /// Whether [`Self::spatial_order`] has one (without building it).
+    pub fn has_spatial_order(&self) -> bool {
+        matches!(self.inner, Inner::Grid(_))
     }
 
     /// A spatial order of the bodies as of the last update, for keeping bodies that are near in
