@@ -224,24 +224,20 @@ impl Collider {
             let fovea = Fovea::new(input.viewer, px, radius.min(89.0));
             let pos = &input.world.position;
             let pass_start = clock.now_ns();
-            let mut settled = 0u32;
-            'pairs: for i in 0..prefix.min(n) {
-                let p = &self.narrow.pairs[i];
-                if !fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5) {
-                    continue;
-                }
-                loop {
-                    if meter.exhausted(self.narrow.tests) {
-                        break 'pairs;
-                    }
-                    if self.narrow.step(i, input.tree, input.world)
-                        != crate::narrow_phase::StepOutcome::Active
-                    {
-                        settled += 1;
-                        break;
-                    }
-                }
-            }
+            // A foveal pair is settled whole, so it is resolved in one go (the same tests as
+            // stepping it level by level, without storing and reloading its list at every
+            // level), on every thread. The meter is read between pairs, so the pass overshoots
+            // its deadline by a few pairs' descents at most (microseconds).
+            let select =
+                |p: &PairState| fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5);
+            let settled = self.narrow.resolve_selected(
+                input.tree,
+                input.world,
+                prefix.min(n),
+                self.config.threads as usize,
+                &select,
+                &mut |tests| !meter.exhausted(tests),
+            );
             self.foveal_pass = Some((settled, clock.now_ns().saturating_sub(pass_start)));
             self.priorities.clear();
             let work = Work {

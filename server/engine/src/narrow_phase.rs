@@ -269,6 +269,8 @@ pub struct NarrowPhase {
     lane_scratch: Vec<[Vec<[u16; 2]>; 2]>,
     /// Sphere tests done this frame.
     pub tests: u64,
+    /// Fewest pairs [`Self::resolve_selected`] splits over threads (tests lower it).
+    parallel_min: Option<usize>,
 }
 
 impl NarrowPhase {
@@ -497,6 +499,142 @@ impl NarrowPhase {
         self.tests += tests;
     }
 
+    /// Resolve, each in one go, the open pairs among the first `prefix` that `select` picks, on up
+    /// to `threads` threads (the calling thread is one), until `go_on` (asked on the calling
+    /// thread between its pairs) says stop: the foveal pass of a whole-frame budget, whose pairs
+    /// are each settled whole or not at all. Threads take contiguous runs of the prefix as they
+    /// free up; each pair's traversal is independent, so every resolved pair's state is what
+    /// resolving it alone gives, whichever thread takes it. Other threads see the stop at their
+    /// next pair, so the pass overshoots by a pair's descent per thread. Returns the pairs
+    /// resolved. Resolved pairs keep no relative frame (none is needed once a pair is settled).
+    pub fn resolve_selected(
+        &mut self,
+        tree: &SphereTree,
+        world: &World,
+        prefix: usize,
+        threads: usize,
+        select: &(dyn Fn(&PairState) -> bool + Sync),
+        go_on: &mut dyn FnMut(u64) -> bool,
+    ) -> u32 {
+        let n = prefix.min(self.pairs.len());
+        let parts = if n < self.parallel_min.unwrap_or(PARALLEL_MIN_PAIRS) {
+            1
+        } else {
+            threads.clamp(1, 64)
+        };
+        let fresh = |p: &PairState| p.status == PairStatus::Untested;
+        if parts == 1 {
+            let mut settled = 0;
+            for i in 0..n {
+                let p = self.pairs[i];
+                if !fresh(&p) || !select(&p) {
+                    continue;
+                }
+                if !go_on(self.tests) {
+                    break;
+                }
+                self.lane().resolve_pair(i, tree, world);
+                settled += 1;
+            }
+            return settled;
+        }
+        let size = (n / (parts * RUNS_PER_THREAD)).max(MIN_RUN);
+        self.lane_arenas.resize_with(parts - 1, Vec::new);
+        self.lane_scratch.resize_with(parts - 1, Default::default);
+        let witness = &self.witness;
+        let mut first_arena = std::mem::take(&mut self.arena);
+        let runs: Vec<Mutex<&mut [PairState]>> =
+            self.pairs[..n].chunks_mut(size).map(Mutex::new).collect();
+        let next = AtomicUsize::new(0);
+        let stop = std::sync::atomic::AtomicBool::new(false);
+        let finished = AtomicUsize::new(0);
+        let tests_before = self.tests;
+        // One thread's share: (sphere tests, pairs resolved). `check` is asked before each pair.
+        let work = |arena: &mut Vec<[u16; 2]>,
+                    scratch: &mut [Vec<[u16; 2]>; 2],
+                    check: &mut dyn FnMut(u64) -> bool|
+         -> (u64, u32) {
+            let (mut count, mut settled) = (0u64, 0u32);
+            'runs: while let Some(run) = runs.get(next.fetch_add(1, Ordering::Relaxed)) {
+                let mut guard = run
+                    .lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner);
+                let mut slot = [PairFrame::IDENTITY];
+                let mut lane = Lane {
+                    pairs: &mut guard,
+                    frames: &mut slot,
+                    one_frame: true,
+                    arena: &mut *arena,
+                    scratch: &mut *scratch,
+                    witness,
+                    tests: &mut count,
+                };
+                for i in 0..lane.pairs.len() {
+                    let p = lane.pairs[i];
+                    if !fresh(&p) || !select(&p) {
+                        continue;
+                    }
+                    if !check(*lane.tests) {
+                        break 'runs;
+                    }
+                    lane.resolve_pair(i, tree, world);
+                    lane.arena.clear();
+                    settled += 1;
+                }
+            }
+            (count, settled)
+        };
+        let (tests, settled) = std::thread::scope(|s| {
+            let work = &work;
+            let stop = &stop;
+            let others: Vec<_> = self
+                .lane_arenas
+                .iter_mut()
+                .zip(self.lane_scratch.iter_mut())
+                .map(|(arena, scratch)| {
+                    let finished = &finished;
+                    s.spawn(move || {
+                        let done = work(arena, scratch, &mut |_| !stop.load(Ordering::Relaxed));
+                        finished.fetch_add(1, Ordering::Release);
+                        done
+                    })
+                })
+                .collect();
+            // The calling thread alone reads the budget (the clock need not be shared); the
+            // tests it is shown are its own plus those done before the pass.
+            let mine = work(&mut first_arena, &mut self.scratch, &mut |t| {
+                let more = !stop.load(Ordering::Relaxed) && go_on(tests_before + t);
+                if !more {
+                    stop.store(true, Ordering::Relaxed);
+                }
+                more
+            });
+            // No run is left to take: watch the budget while the others finish theirs.
+            let workers = others.len();
+            while !stop.load(Ordering::Relaxed) && finished.load(Ordering::Acquire) < workers {
+                if !go_on(tests_before + mine.0) {
+                    stop.store(true, Ordering::Relaxed);
+                }
+                std::hint::spin_loop();
+            }
+            let (mut tests, mut settled) = mine;
+            for h in others {
+                match h.join() {
+                    Ok((t, k)) => {
+                        tests += t;
+                        settled += k;
+                    }
+                    Err(panic) => std::panic::resume_unwind(panic),
+                }
+            }
+            (tests, settled)
+        });
+        drop(runs);
+        self.arena = first_arena;
+        self.tests += tests;
+        settled
+    }
+
     /// Step pair `i` until it is resolved (no budget).
     pub fn resolve_fully(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
         self.lane().resolve_pair(i, tree, world)
@@ -552,8 +690,10 @@ impl NarrowPhase {
         let basis = glam::Mat3::from(world.basis[p.a as usize]).as_dmat3();
         let local_a = LVec3::from_vec4(sa).as_dvec3();
         // The pair's frame as its first step stored it, or computed again (bit for bit the same)
-        // where the frame was resolved pair by pair and kept none.
-        let frame = if self.frames_live {
+        // where pairs were resolved each in one go and kept none (a resolved pair's slot may be
+        // stale: only open and deemed pairs were surely stepped through the stored frames).
+        let stored = matches!(p.status, PairStatus::Active | PairStatus::Deemed);
+        let frame = if self.frames_live && stored {
             self.frames[i]
         } else {
             PairFrame::new(world, p.a as usize, p.b as usize)
@@ -1077,6 +1217,65 @@ mod tests {
                 "pair {i}"
             );
             assert_eq!(q.status, f.status, "pair {i}");
+        }
+    }
+
+    /// The foveal pass's resolution: on one thread or two, every selected pair is resolved exactly
+    /// as alone, the others are untouched, and a stop leaves each pair settled or untested.
+    #[test]
+    fn resolving_a_selection_settles_whole_pairs_on_any_thread_count() {
+        let cfg = SceneConfig::paper(1_500, 4);
+        let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
+        let world = World::generate(&cfg);
+        let mut bp = crate::broad_phase::BroadPhase::new(
+            tree.root_radius(),
+            world.lo,
+            cfg.volume_side(),
+            world.len(),
+        );
+        let pairs = bp.update(&world.position).to_vec();
+        let prefix = pairs.len() * 3 / 4;
+        let select = |p: &PairState| (p.a + p.b) % 3 != 0;
+        let mut alone = NarrowPhase::default();
+        alone.reset(&pairs);
+        let mut want = 0;
+        for i in 0..prefix {
+            if select(&alone.pairs[i]) {
+                alone.resolve_fully(i, &tree, &world);
+                want += 1;
+            }
+        }
+        for threads in [1, 2, 3] {
+            let mut np = NarrowPhase {
+                parallel_min: Some(1),
+                ..NarrowPhase::default()
+            };
+            np.reset(&pairs);
+            let got = np.resolve_selected(&tree, &world, prefix, threads, &select, &mut |_| true);
+            assert_eq!(got, want);
+            assert_eq!(np.tests, alone.tests, "{threads} threads");
+            for (i, (p, q)) in np.pairs.iter().zip(&alone.pairs).enumerate() {
+                assert_eq!(
+                    (p.status, p.levels, p.resolved_level, p.last),
+                    (q.status, q.levels, q.resolved_level, q.last),
+                    "pair {i}, {threads} threads"
+                );
+            }
+            // Stopped after 40 pairs on the calling thread: whole pairs only.
+            np.reset(&pairs);
+            let mut calls = 0;
+            let got = np.resolve_selected(&tree, &world, prefix, threads, &select, &mut |_| {
+                calls += 1;
+                calls <= 40
+            });
+            assert!(got >= 40 && got < want, "{got} of {want}");
+            let settled = np
+                .pairs
+                .iter()
+                .filter(|p| p.status != PairStatus::Untested)
+                .count();
+            assert_eq!(settled as u32, got);
+            assert!(np.pairs.iter().all(|p| p.status != PairStatus::Active));
         }
     }
 
