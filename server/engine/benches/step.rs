@@ -14,6 +14,10 @@
 //!   witnesses of frame 60, on 1 and 2 threads: what an exact frame's narrow phase costs in the
 //!   steady state (about 25 sphere tests per candidate pair, half of the pairs settled by the
 //!   root test); per sphere test in the throughput line.
+//! - `foveal_pass/{stepped,one-go-1t,one-go-2t}/100000`: a whole-frame budget's foveal pass over
+//!   frame 61 with a fixation at the centre (every pair within 5 degrees settled), as it was (each
+//!   pair stepped level by level) and as it is (each resolved in one go, on 1 and 2 threads); per
+//!   foveal pair in the throughput line.
 //! - `measure/{settled,deemed}/100000`: the metrics pass (counts, the fovea count over every
 //!   candidate pair, Δ and P over the deemed ones, sampled beyond 25,000) of one frame at
 //!   N = 100,000 with a fixation, every pair settled exactly or every pair deemed.
@@ -197,6 +201,60 @@ fn narrow_steady(c: &mut Criterion) {
     g.finish();
 }
 
+fn foveal_pass(c: &mut Criterion) {
+    use foveal_engine::metrics::Fovea;
+    use foveal_engine::narrow_phase::{PairState, StepOutcome};
+    let mut g = c.benchmark_group("foveal_pass");
+    g.measurement_time(Duration::from_secs(6));
+    g.sample_size(20);
+    let n = 100_000u32;
+    let mut sim = Simulation::new(exact(n)).expect("valid");
+    for _ in 0..60 {
+        sim.step(None, &FrozenClock);
+    }
+    let before = sim.world().clone();
+    let before_pairs = sim.candidate_pairs().to_vec();
+    sim.step(None, &FrozenClock);
+    let (world, pairs, tree) = (sim.world(), sim.candidate_pairs(), sim.tree());
+    let viewer = sim.viewer();
+    let fovea = Fovea::new(viewer, viewer.to_pixels(0.5, 0.5), 5.0);
+    let pos = &world.position;
+    let select =
+        |p: &PairState| fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5);
+    let mut np = NarrowPhase::default();
+    np.reset(&before_pairs);
+    np.resolve_all(tree, &before, 1);
+    np.remember_witnesses(before.len());
+    let foveal = pairs
+        .iter()
+        .filter(|&&(a, b)| fovea.contains_point((pos[a as usize] + pos[b as usize]) * 0.5))
+        .count();
+    g.throughput(Throughput::Elements(foveal as u64));
+    // The pass as it was: each foveal pair stepped level by level until settled.
+    g.bench_function(BenchmarkId::new("stepped", n), |b| {
+        b.iter(|| {
+            np.reset(pairs);
+            for i in 0..pairs.len() {
+                if select(&np.pairs[i]) {
+                    while np.step(i, tree, world) == StepOutcome::Active {}
+                }
+            }
+            black_box(np.tests)
+        })
+    });
+    for threads in [1usize, 2] {
+        g.bench_function(BenchmarkId::new(format!("one-go-{threads}t"), n), |b| {
+            b.iter(|| {
+                np.reset(pairs);
+                let settled =
+                    np.resolve_selected(tree, world, pairs.len(), threads, &select, &mut |_| true);
+                black_box(settled)
+            })
+        });
+    }
+    g.finish();
+}
+
 fn measure(c: &mut Criterion) {
     use foveal_engine::collider::Collider;
     use foveal_engine::{FrameBudget, FrameReport, PhaseProfile};
@@ -320,6 +378,7 @@ fn ordering(c: &mut Criterion) {
 
 criterion_group!(
     benches,
+    foveal_pass,
     frame,
     broad,
     narrow,
