@@ -49,28 +49,6 @@ pub struct Metrics {
     pub foveal_deemed: u32,
 }
 
-#[derive(Debug, Clone, Copy, Default)]
-struct Part {
-    m: Metrics,
-    delta_sq: f64,
-    p_sq: f64,
-}
-
-impl Part {
-    fn add(&mut self, o: &Part) {
-        self.m.delta += o.m.delta;
-        self.m.p += o.m.p;
-        self.delta_sq += o.delta_sq;
-        self.p_sq += o.p_sq;
-        self.m.real += o.m.real;
-        for (a, b) in self.m.per_level.iter_mut().zip(o.m.per_level) {
-            *a += b;
-        }
-        self.m.foveal += o.m.foveal;
-        self.m.foveal_deemed += o.m.foveal_deemed;
-    }
-}
-
 /// A fovea test: whether a screen point is within a visual angle of the fixation, exact in f64:
 /// the angle between the unit eye rays of the two points is within the threshold iff their chord
 /// is within the threshold's chord, 2 sin(threshold / 2), which costs a square root and no
@@ -135,13 +113,26 @@ impl<'a> Fovea<'a> {
     /// underestimates it, which only makes the test keep more).
     #[inline]
     pub fn may_contain_ball(&self, p: Vec3, radius: f64) -> bool {
+        self.may_contain_grown(p, self.k.max(1.0) * radius)
+    }
+
+    /// [`Self::may_contain_ball`] for every point of `ps`, into `out`: the same answers, in a
+    /// loop the compiler can vectorise (the test has no branch).
+    pub fn may_contain_balls(&self, ps: &[Vec3], radius: f64, out: &mut [bool]) {
+        let grow = self.k.max(1.0) * radius;
+        for (o, &p) in out.iter_mut().zip(ps) {
+            *o = self.may_contain_grown(p, grow);
+        }
+    }
+
+    /// The test of [`Self::may_contain_ball`] for a ball already grown into ray space: with
+    /// both sides squared, `|u × f| cos θ <= m + (u · f) sin θ` (m the margin) holds iff the
+    /// right side is not negative and `|u × f|^2 cos^2 θ <= (m + (u · f) sin θ)^2`, so no square
+    /// root and no branch.
+    #[inline]
+    fn may_contain_grown(&self, p: Vec3, grow: f64) -> bool {
         let r = p - self.viewer.eye;
         let depth = -r.z;
-        let grow = self.k.max(1.0) * radius;
-        // Near or behind the eye the ray space is not a linear image of the world: keep.
-        if depth <= grow {
-            return true;
-        }
         let u = [self.k * r.x, -self.k * r.y, depth];
         let f = self.fixation_ray;
         let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
@@ -150,10 +141,11 @@ impl<'a> Fovea<'a> {
             u[2] * f[0] - u[0] * f[2],
             u[0] * f[1] - u[1] * f[0],
         ];
-        let cross = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
-        let dist = cross * self.cos - dot * self.sin;
+        let cross_sq = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
         // A margin far above the rounding of either test (relative 1e-15).
-        dist <= grow * (1.0 + 1e-9) + 1e-9 * depth
+        let rhs = grow * (1.0 + 1e-9) + 1e-9 * depth + dot * self.sin;
+        // Near or behind the eye the ray space is not a linear image of the world: keep.
+        (depth <= grow) | ((rhs >= 0.0) & (cross_sq * (self.cos * self.cos) <= rhs * rhs))
     }
 
     /// Whether the screen point `px` is within the threshold.
@@ -204,6 +196,14 @@ pub fn measure(
 }
 
 /// [`measure`] within an [`Effort`].
+///
+/// Two passes, each over fixed runs of [`CHUNK`] pairs shared out among the threads:
+/// 1. **Counts**, over every pair: per status and level (a histogram, so no pair branches on its
+///    status), and the fovea test over the pairs that may be foveal. Integer sums: the same for
+///    every thread count.
+/// 2. **Δ and P** over the sample only: the deemed pairs whose index is a multiple of the stride,
+///    which pass 1's deemed count fixes. The pass visits one pair in `stride` (in an exact frame,
+///    none), and its floating-point partial sums are added in run order.
 pub fn measure_within(
     np: &NarrowPhase,
     tree: &SphereTree,
@@ -213,114 +213,227 @@ pub fn measure_within(
     threads: usize,
     effort: Effort,
 ) -> Metrics {
-    let limit = effort.sample_limit;
-    let deemed = np
-        .pairs
-        .iter()
-        .filter(|p| p.status == PairStatus::Deemed)
-        .count() as u32;
-    let stride = deemed.div_ceil(limit.max(1)).max(1) as usize;
-    // Candidate boxes overlap (half-size h = the root radius): the centres differ by less than
-    // 2h on each axis, so a pair's centre is within sqrt(3) h of its first body.
-    let centre_reach = 3f64.sqrt() * tree.root_radius();
-    // When every pair is tested and there are pairs enough, the filter is run once per body, in
-    // body order, and a pair reads one byte of its first body instead of its position (a cache
-    // miss in random order); when only a prefix is (a shed frame), or a frame has fewer pairs
-    // than a quarter of its bodies (a large scene whose broad phase was shed), per pair: a pass
-    // over a million bodies for a few pairs cost a shed frame 7 ms.
-    let near: Option<Vec<bool>> = fovea
-        .filter(|_| effort.fovea_pairs >= np.pairs.len() && 4 * np.pairs.len() >= world.len())
-        .map(|f| {
-            world
-                .position
-                .iter()
-                .map(|&p| f.may_contain_ball(p, centre_reach))
-                .collect()
-        });
-    let run = |lo: usize, hi: usize| -> Part {
-        let mut part = Part::default();
-        for i in lo..hi {
-            let p = &np.pairs[i];
-            match p.status {
-                PairStatus::Colliding => part.m.real += 1,
-                PairStatus::Deemed if i % stride == 0 => {
-                    let ev = np.evidence(i, tree, world);
-                    part.m.delta += ev.gap;
-                    part.delta_sq += ev.gap * ev.gap;
-                    if let Some(v) = view {
-                        let w = v.weight(&ev);
-                        part.m.p += w;
-                        part.p_sq += w * w;
-                    }
-                }
-                _ => {}
-            }
-            if p.resolved_level > 0 {
-                part.m.per_level[p.resolved_level as usize - 1] += 1;
-            }
-            if let Some(f) = fovea.filter(|_| i < effort.fovea_pairs)
-                && match &near {
-                    Some(near) => near[p.a as usize],
-                    None => f.may_contain_ball(world.position[p.a as usize], centre_reach),
-                }
-            {
-                let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
-                if f.contains_point(c) {
-                    part.m.foveal += 1;
-                    part.m.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
-                }
-            }
-        }
-        part
-    };
-    let n = np.pairs.len();
+    let pairs = &np.pairs[..];
+    let n = pairs.len();
     let runs: Vec<(usize, usize)> = (0..n.div_ceil(CHUNK).max(1))
         .map(|k| (k * CHUNK, ((k + 1) * CHUNK).min(n)))
         .collect();
-    let parts: Vec<Part> = if threads <= 1 || runs.len() == 1 {
-        runs.iter().map(|&(lo, hi)| run(lo, hi)).collect()
-    } else {
-        // Worker w sums runs w, w + workers, ...; each result goes back to its run's slot.
-        let workers = threads.min(runs.len());
-        let (run, runs) = (&run, &runs);
-        let share = move |w: usize| -> Vec<(usize, Part)> {
-            (w..runs.len())
-                .step_by(workers)
-                .map(|k| (k, run(runs[k].0, runs[k].1)))
-                .collect()
-        };
-        let done = std::thread::scope(|s| {
-            let handles: Vec<_> = (1..workers).map(|w| s.spawn(move || share(w))).collect();
-            let mut done = share(0);
-            for h in handles {
-                match h.join() {
-                    Ok(v) => done.extend(v),
-                    Err(panic) => std::panic::resume_unwind(panic),
+    // Candidate boxes overlap (half-size h = the root radius): the centres differ by less than
+    // 2h on each axis, so a pair's centre is within sqrt(3) h of its first body.
+    let centre_reach = 3f64.sqrt() * tree.root_radius();
+    // When the pairs that may be foveal (all, or a shed frame's prefix) number at least a quarter
+    // of the bodies, the filter is run once per body, in body order and without a branch, and a
+    // pair reads one byte of its first body instead of its position (a cache miss in random
+    // order); with fewer, per pair: a pass over a million bodies for a few pairs cost a shed
+    // frame 7 ms.
+    let fovea_end = effort.fovea_pairs.min(n);
+    let near: Option<Vec<bool>> = fovea
+        .filter(|_| 4 * fovea_end >= world.len())
+        .map(|f| near_bodies(f, &world.position, centre_reach, threads));
+    let count = |lo: usize, hi: usize| -> Counts {
+        let mut c = Counts::default();
+        // Four interleaved histograms: consecutive pairs mostly share a bin, and one counter
+        // would make every increment wait for the last.
+        let mut hist = [[0u32; BINS]; 4];
+        for (i, p) in pairs[lo..hi].iter().enumerate() {
+            hist[i & 3][bin(p.status, p.resolved_level)] += 1;
+        }
+        for h in &hist {
+            for (a, b) in c.hist.iter_mut().zip(h) {
+                *a += b;
+            }
+        }
+        if let Some(f) = fovea
+            && lo < fovea_end
+        {
+            let pos = &world.position;
+            for p in &pairs[lo..hi.min(fovea_end)] {
+                let a = p.a as usize;
+                let maybe = match &near {
+                    Some(near) => near[a],
+                    None => f.may_contain_ball(pos[a], centre_reach),
+                };
+                if maybe && f.contains_point((pos[a] + pos[p.b as usize]) * 0.5) {
+                    c.foveal += 1;
+                    c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
                 }
             }
-            done
-        });
-        let mut out = vec![Part::default(); runs.len()];
-        for (k, p) in done {
-            out[k] = p;
         }
-        out
+        c
     };
-    let mut total = Part::default();
-    for p in &parts {
-        total.add(p);
+    let mut counts = Counts::default();
+    for c in in_runs(&runs, threads, &count) {
+        counts.add(&c);
     }
-    let mut m = total.m;
+    let mut m = counts.metrics();
+    let deemed = counts.of(PairStatus::Deemed);
+    let stride = deemed.div_ceil(effort.sample_limit.max(1)).max(1) as usize;
+    if deemed > 0 {
+        let sample = |lo: usize, hi: usize| -> Sums {
+            let mut s = Sums::default();
+            for i in (lo.next_multiple_of(stride)..hi).step_by(stride) {
+                if pairs[i].status != PairStatus::Deemed {
+                    continue;
+                }
+                let ev = np.evidence(i, tree, world);
+                s.delta += ev.gap;
+                s.delta_sq += ev.gap * ev.gap;
+                if let Some(v) = view {
+                    let w = v.weight(&ev);
+                    s.p += w;
+                    s.p_sq += w * w;
+                }
+            }
+            s
+        };
+        let mut total = Sums::default();
+        for s in in_runs(&runs, threads, &sample) {
+            total.delta += s.delta;
+            total.p += s.p;
+            total.delta_sq += s.delta_sq;
+            total.p_sq += s.p_sq;
+        }
+        m.delta = total.delta;
+        m.p = total.p;
+        if stride > 1 {
+            let k = stride as f64;
+            m.delta *= k;
+            m.p *= k;
+            let var = (1.0 - 1.0 / k) * k * k;
+            m.delta_se = (var * total.delta_sq).sqrt();
+            m.p_se = (var * total.p_sq).sqrt();
+        }
+    }
     m.stride = stride as u32;
-    if stride > 1 {
-        let k = stride as f64;
-        m.delta *= k;
-        m.p *= k;
-        let var = (1.0 - 1.0 / k) * k * k;
-        m.delta_se = (var * total.delta_sq).sqrt();
-        m.p_se = (var * total.p_sq).sqrt();
-    }
     m
+}
+
+/// Histogram bins: one per status and resolved level.
+const LEVELS: usize = crate::config::MAX_DEPTH + 1;
+const STATUSES: usize = 5;
+const BINS: usize = STATUSES * LEVELS;
+
+#[inline]
+fn bin(status: PairStatus, level: u8) -> usize {
+    // Levels never exceed the tree's depth; `min` keeps the index in range without a panic path.
+    (status as usize) * LEVELS + (level as usize).min(LEVELS - 1)
+}
+
+/// Pass 1's integer sums of one run.
+#[derive(Debug, Clone, Copy)]
+struct Counts {
+    hist: [u32; BINS],
+    foveal: u32,
+    foveal_deemed: u32,
+}
+
+impl Default for Counts {
+    fn default() -> Self {
+        Self {
+            hist: [0; BINS],
+            foveal: 0,
+            foveal_deemed: 0,
+        }
+    }
+}
+
+impl Counts {
+    fn add(&mut self, o: &Counts) {
+        for (a, b) in self.hist.iter_mut().zip(o.hist) {
+            *a += b;
+        }
+        self.foveal += o.foveal;
+        self.foveal_deemed += o.foveal_deemed;
+    }
+
+    fn of(&self, status: PairStatus) -> u32 {
+        let s = status as usize * LEVELS;
+        self.hist[s..s + LEVELS].iter().sum()
+    }
+
+    /// The counts as metrics (Δ and P still zero).
+    fn metrics(&self) -> Metrics {
+        let mut m = Metrics {
+            real: self.of(PairStatus::Colliding),
+            foveal: self.foveal,
+            foveal_deemed: self.foveal_deemed,
+            ..Metrics::default()
+        };
+        for (l, count) in m.per_level.iter_mut().enumerate() {
+            *count = (0..STATUSES).map(|s| self.hist[s * LEVELS + l + 1]).sum();
+        }
+        m
+    }
+}
+
+/// Pass 2's floating-point sums of one run.
+#[derive(Debug, Clone, Copy, Default)]
+struct Sums {
+    delta: f64,
+    p: f64,
+    delta_sq: f64,
+    p_sq: f64,
+}
+
+/// `f` over every run, on up to `threads` threads, the results in run order: worker w takes runs
+/// w, w + workers, ... (a fixed partition, so the results do not depend on the thread count).
+fn in_runs<T: Send>(
+    runs: &[(usize, usize)],
+    threads: usize,
+    f: &(impl Fn(usize, usize) -> T + Sync),
+) -> Vec<T> {
+    if threads <= 1 || runs.len() <= 1 {
+        return runs.iter().map(|&(lo, hi)| f(lo, hi)).collect();
+    }
+    let workers = threads.min(runs.len());
+    let share = move |w: usize| -> Vec<(usize, T)> {
+        (w..runs.len())
+            .step_by(workers)
+            .map(|k| (k, f(runs[k].0, runs[k].1)))
+            .collect()
+    };
+    let share = &share;
+    let mut done = std::thread::scope(|s| {
+        let handles: Vec<_> = (1..workers).map(|w| s.spawn(move || share(w))).collect();
+        let mut done = share(0);
+        for h in handles {
+            match h.join() {
+                Ok(v) => done.extend(v),
+                Err(panic) => std::panic::resume_unwind(panic),
+            }
+        }
+        done
+    });
+    done.sort_unstable_by_key(|&(k, _)| k);
+    done.into_iter().map(|(_, t)| t).collect()
+}
+
+/// Bodies fewer than this are filtered on one thread: a scoped thread costs tens of microseconds.
+const NEAR_PER_THREAD: usize = 32_768;
+
+/// Per body: whether a pair it finds may have its centre in the fovea (see
+/// [`Fovea::may_contain_ball`]), on up to `threads` threads.
+fn near_bodies(f: &Fovea<'_>, position: &[Vec3], reach: f64, threads: usize) -> Vec<bool> {
+    let mut near = vec![false; position.len()];
+    let fill = |out: &mut [bool], ps: &[Vec3]| f.may_contain_balls(ps, reach, out);
+    let workers = threads.min(position.len() / NEAR_PER_THREAD).max(1);
+    if workers == 1 {
+        fill(&mut near, position);
+        return near;
+    }
+    let per = position.len().div_ceil(workers);
+    std::thread::scope(|s| {
+        let fill = &fill;
+        let mut parts = near.chunks_mut(per).zip(position.chunks(per));
+        let first = parts.next();
+        for (out, ps) in parts {
+            s.spawn(move || fill(out, ps));
+        }
+        if let Some((out, ps)) = first {
+            fill(out, ps);
+        }
+    });
+    near
 }
 
 #[cfg(test)]
@@ -379,6 +492,113 @@ mod tests {
         assert!(exact.foveal > 0 && exact.foveal < n);
         let two = measure_within(&np, &tree, &world, Some(&view), Some(&fovea), 2, limit);
         assert_eq!(two, sampled);
+    }
+
+    /// On a frame of every status and level, over more than one run of pairs: the counts equal a
+    /// count pair by pair, the sample is exactly the deemed pairs at multiples of the stride, and
+    /// none of it depends on the thread count or on whether the fovea is filtered per body or per
+    /// pair (a shed frame's prefix).
+    #[test]
+    fn counts_and_sample_match_a_pair_by_pair_sum_on_any_thread_count() {
+        let cfg = SceneConfig::paper(20_000, 5);
+        let world = World::generate(&cfg);
+        let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
+        let mut bp = BroadPhase::new(tree.root_radius(), world.lo, cfg.volume_side(), world.len());
+        let mut np = NarrowPhase::default();
+        np.reset(bp.update(&world.position));
+        assert!(
+            np.pairs.len() > CHUNK,
+            "{} pairs: one run only",
+            np.pairs.len()
+        );
+        // Settle every third pair, deem the rest.
+        np.resolve_selected(
+            &tree,
+            &world,
+            usize::MAX,
+            1,
+            &|p: &crate::narrow_phase::PairState| (p.a + p.b) % 3 == 0,
+            &mut |_| true,
+        );
+        np.deem_open();
+        let viewer = Viewer::new(
+            &CameraConfig::default(),
+            &Display::default(),
+            world.lo,
+            cfg.volume_side(),
+        );
+        let view = FrameView {
+            viewer: &viewer,
+            fixation_px: viewer.to_pixels(0.4, 0.6),
+            model: PerceptualModel::default(),
+            uncertainty_deg: 0.0,
+        };
+        let fovea = Fovea::new(&viewer, view.fixation_px, 5.0);
+        let pos = &world.position;
+        let centre =
+            |p: &crate::narrow_phase::PairState| (pos[p.a as usize] + pos[p.b as usize]) * 0.5;
+        for (limit, prefix) in [
+            (u32::MAX, usize::MAX),
+            (1_000, usize::MAX),
+            (700, 9_000),
+            (700, 40_000),
+        ] {
+            let effort = Effort {
+                sample_limit: limit,
+                fovea_pairs: prefix,
+            };
+            let m = measure_within(&np, &tree, &world, Some(&view), Some(&fovea), 1, effort);
+            let mut want = Metrics::default();
+            let deemed = np
+                .pairs
+                .iter()
+                .filter(|p| p.status == PairStatus::Deemed)
+                .count();
+            let stride = deemed.div_ceil(limit as usize).max(1);
+            let (mut delta, mut p_sum) = (0.0, 0.0);
+            for (i, p) in np.pairs.iter().enumerate() {
+                want.real += u32::from(p.status == PairStatus::Colliding);
+                if p.resolved_level > 0 {
+                    want.per_level[p.resolved_level as usize - 1] += 1;
+                }
+                if i < prefix && fovea.contains_point(centre(p)) {
+                    want.foveal += 1;
+                    want.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
+                }
+                if p.status == PairStatus::Deemed && i % stride == 0 {
+                    let ev = np.evidence(i, &tree, &world);
+                    delta += ev.gap;
+                    p_sum += view.weight(&ev);
+                }
+            }
+            assert_eq!(m.stride as usize, stride);
+            assert_eq!((m.real, m.per_level), (want.real, want.per_level));
+            assert_eq!(
+                (m.foveal, m.foveal_deemed),
+                (want.foveal, want.foveal_deemed)
+            );
+            assert!(want.real > 0 && want.foveal_deemed > 0 && want.foveal > want.foveal_deemed);
+            let k = stride as f64;
+            assert!(
+                (m.delta - k * delta).abs() <= 1e-9 * m.delta.abs(),
+                "{} {}",
+                m.delta,
+                k * delta
+            );
+            assert!((m.p - k * p_sum).abs() <= 1e-9 * m.p.abs());
+            for threads in [2, 3] {
+                let t = measure_within(
+                    &np,
+                    &tree,
+                    &world,
+                    Some(&view),
+                    Some(&fovea),
+                    threads,
+                    effort,
+                );
+                assert_eq!(t, m, "{threads} threads");
+            }
+        }
     }
 
     /// The first-body filter never drops a point of the ball that is in the fovea, rules out most
