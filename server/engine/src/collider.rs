@@ -54,6 +54,9 @@ pub struct Collider {
     measured: u32,
     /// The last foveal pass: pairs it settled and the time it took (ns).
     foveal_pass: Option<(u32, u64)>,
+    /// The last frame's foveal pairs, when its foveal pass selected exactly the pairs the
+    /// metrics count as foveal and settled every one (see [`Self::foveal_known`]).
+    foveal_known: Option<u32>,
 }
 
 /// A wall-clock frame orders its work only if the expected cost of ordering is at most this
@@ -108,6 +111,7 @@ impl Collider {
             shed_streak: 0,
             measured: 0,
             foveal_pass: None,
+            foveal_known: None,
             config: config.clone(),
         })
     }
@@ -126,6 +130,15 @@ impl Collider {
     /// (ns).
     pub fn foveal_pass(&self) -> Option<(u32, u64)> {
         self.foveal_pass
+    }
+
+    /// The foveal pairs of the last frame, known without testing them again: its foveal pass
+    /// tested every pair that may be foveal with the metrics' own fovea (the fixation had no
+    /// uncertainty to widen it) and settled every pair it selected, so the frame has exactly that
+    /// many foveal pairs and none of them is deemed. None when the pass did not run, was cut
+    /// short by the budget, or used a wider fovea.
+    pub fn foveal_known(&self) -> Option<u32> {
+        self.foveal_known
     }
 
     /// Renumber the bodies in what is kept between frames (old id `i` becomes `new_of_old[i]`):
@@ -196,6 +209,8 @@ impl Collider {
     ) {
         let t0 = clock.now_ns();
         self.narrow.reset(input.candidates);
+        self.foveal_pass = None;
+        self.foveal_known = None;
         let fixation_px = fixation.map(|f| {
             let f = f.clamped();
             input.viewer.to_pixels(f.x, f.y)
@@ -230,15 +245,24 @@ impl Collider {
             // its deadline by a few pairs' descents at most (microseconds).
             let select =
                 |p: &PairState| fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5);
+            let mut cut = false;
             let settled = self.narrow.resolve_selected(
                 input.tree,
                 input.world,
                 prefix.min(n),
                 self.config.threads as usize,
                 &select,
-                &mut |tests| !meter.exhausted(tests),
+                &mut |tests| {
+                    let go = !meter.exhausted(tests);
+                    cut |= !go;
+                    go
+                },
             );
             self.foveal_pass = Some((settled, clock.now_ns().saturating_sub(pass_start)));
+            // Not cut: every selected pair was settled. The metrics count the pairs of the same
+            // prefix within FOVEAL_DEG of the same point, the same test when the radius is not
+            // widened by uncertainty.
+            self.foveal_known = (!cut && radius == FOVEAL_DEG).then_some(settled);
             self.priorities.clear();
             let work = Work {
                 tree: input.tree,

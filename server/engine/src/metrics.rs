@@ -15,7 +15,7 @@
 
 use crate::fixation::FrameView;
 use crate::math::Vec3;
-use crate::narrow_phase::{NarrowPhase, PairStatus};
+use crate::narrow_phase::{NarrowPhase, PairState, PairStatus};
 use crate::perception::Viewer;
 use crate::sphere_tree::SphereTree;
 use crate::world::World;
@@ -97,7 +97,7 @@ impl<'a> Fovea<'a> {
         let u = [self.k * r.x, -self.k * r.y, depth];
         let f = self.fixation_ray;
         let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
-        dot > 0.0 && dot * dot >= self.cos * self.cos * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
+        (dot > 0.0) & (dot * dot >= self.cos * self.cos * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]))
     }
 
     /// Whether some point within `radius` of world point `p` may be seen within the threshold:
@@ -171,6 +171,9 @@ pub struct Effort {
     /// Only the first this many pairs can be foveal: pairs are listed by region in perceptual
     /// order and the regions after these lie wholly outside the fovea, so they are not tested.
     pub fovea_pairs: usize,
+    /// The foveal pairs, all settled, when the frame's foveal pass already tested exactly the
+    /// metrics' fovea over the same pairs (see `Collider::foveal_known`): not tested again.
+    pub foveal_known: Option<u32>,
 }
 
 impl Default for Effort {
@@ -178,6 +181,7 @@ impl Default for Effort {
         Self {
             sample_limit: EXACT_LIMIT,
             fovea_pairs: usize::MAX,
+            foveal_known: None,
         }
     }
 }
@@ -221,14 +225,15 @@ pub fn measure_within(
     // Candidate boxes overlap (half-size h = the root radius): the centres differ by less than
     // 2h on each axis, so a pair's centre is within sqrt(3) h of its first body.
     let centre_reach = 3f64.sqrt() * tree.root_radius();
-    // When the pairs that may be foveal (all, or a shed frame's prefix) number at least a quarter
-    // of the bodies, the filter is run once per body, in body order and without a branch, and a
-    // pair reads one byte of its first body instead of its position (a cache miss in random
-    // order); with fewer, per pair: a pass over a million bodies for a few pairs cost a shed
-    // frame 7 ms.
+    // When every pair is tested and there are pairs enough, the filter is run once per body, in
+    // body order and without a branch, and a pair reads one byte of its first body instead of
+    // its position (a cache miss in random order); with fewer pairs than a quarter of the
+    // bodies, per pair: a pass over a million bodies for a few pairs cost a shed frame 7 ms.
+    // A fovea already counted is not tested again.
+    let fovea = fovea.filter(|_| effort.foveal_known.is_none());
     let fovea_end = effort.fovea_pairs.min(n);
     let near: Option<Vec<bool>> = fovea
-        .filter(|_| 4 * fovea_end >= world.len())
+        .filter(|_| fovea_end == n && 4 * n >= world.len())
         .map(|f| near_bodies(f, &world.position, centre_reach, threads));
     let count = |lo: usize, hi: usize| -> Counts {
         let mut c = Counts::default();
@@ -243,17 +248,29 @@ pub fn measure_within(
                 *a += b;
             }
         }
-        if let Some(f) = fovea
-            && lo < fovea_end
-        {
-            let pos = &world.position;
-            for p in &pairs[lo..hi.min(fovea_end)] {
+        let Some(f) = fovea.filter(|_| lo < fovea_end) else {
+            return c;
+        };
+        let pos = &world.position;
+        let mid = |p: &PairState| (pos[p.a as usize] + pos[p.b as usize]) * 0.5;
+        let tested = &pairs[lo..hi.min(fovea_end)];
+        if fovea_end < n {
+            // A shed frame's prefix: the pairs of the regions that may hold foveal pairs, about
+            // half of them foveal. Every centre is tested, without a branch on the outcome.
+            for p in tested {
+                let inside = f.contains_point(mid(p));
+                c.foveal += u32::from(inside);
+                c.foveal_deemed += u32::from(inside & (p.status == PairStatus::Deemed));
+            }
+        } else {
+            // Every pair, a few percent of them foveal: the first body rules most out.
+            for p in tested {
                 let a = p.a as usize;
                 let maybe = match &near {
                     Some(near) => near[a],
                     None => f.may_contain_ball(pos[a], centre_reach),
                 };
-                if maybe && f.contains_point((pos[a] + pos[p.b as usize]) * 0.5) {
+                if maybe && f.contains_point(mid(p)) {
                     c.foveal += 1;
                     c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
                 }
@@ -266,6 +283,10 @@ pub fn measure_within(
         counts.add(&c);
     }
     let mut m = counts.metrics();
+    if let Some(known) = effort.foveal_known {
+        m.foveal = known;
+        m.foveal_deemed = 0;
+    }
     let deemed = counts.of(PairStatus::Deemed);
     let stride = deemed.div_ceil(effort.sample_limit.max(1)).max(1) as usize;
     if deemed > 0 {
@@ -546,6 +567,7 @@ mod tests {
             let effort = Effort {
                 sample_limit: limit,
                 fovea_pairs: prefix,
+                foveal_known: None,
             };
             let m = measure_within(&np, &tree, &world, Some(&view), Some(&fovea), 1, effort);
             let mut want = Metrics::default();

@@ -333,7 +333,10 @@ impl Simulation {
         // Pairs are listed region by region in the searched order; only the first regions can
         // hold foveal pairs.
         let effort = match (shedding, foveal_prefix) {
-            (Some((_, ns)), Some(prefix)) => Shedder::effort(ns, prefix),
+            (Some((_, ns)), Some(prefix)) => crate::metrics::Effort {
+                foveal_known: self.collider.foveal_known(),
+                ..Shedder::effort(ns, prefix)
+            },
             _ => crate::metrics::Effort::default(),
         };
         self.collider
@@ -429,6 +432,70 @@ mod tests {
             .into_iter()
             .map(|p| sim.id_pair(p))
             .collect()
+    }
+
+    /// Under a whole-frame budget the report's foveal counts are those of the pairs themselves,
+    /// whether the foveal pass settled every foveal pair and the metrics took its count, or the
+    /// budget cut the pass short and the metrics tested the pairs again.
+    #[test]
+    fn the_foveal_counts_are_exact_whoever_counts_them() {
+        use crate::metrics::Fovea;
+        use crate::report::FOVEAL_DEG;
+        use std::cell::Cell;
+        struct Ticking(Cell<u64>, u64);
+        impl Clock for Ticking {
+            fn now_ns(&self) -> u64 {
+                let t = self.0.get() + self.1;
+                self.0.set(t);
+                t
+            }
+        }
+        let (mut known, mut tested) = (0, 0);
+        for (budget_ns, fx) in [
+            (30_000_000u64, 0.5),
+            (30_000_000, 0.2),
+            (400_000, 0.5),
+            (900_000, 0.3),
+        ] {
+            let mut sim = Simulation::new(SimConfig {
+                scene: SceneConfig::paper(20_000, 5),
+                scheduler: crate::config::SchedulerKind::Priced,
+                budget: BudgetSpec::WallMs(budget_ns as f64 * 1e-6),
+                ..SimConfig::default()
+            })
+            .expect("valid");
+            let clock = Ticking(Cell::new(0), 500);
+            let fixation = Some(Fixation::at(fx, 0.5));
+            for _ in 0..6 {
+                let r = sim.step(fixation, &clock).clone();
+                if r.foveal_stale > 0 {
+                    continue;
+                }
+                let (world, viewer) = (sim.world(), sim.viewer());
+                let fovea = Fovea::new(viewer, viewer.to_pixels(fx, 0.5), FOVEAL_DEG);
+                let (mut foveal, mut deemed) = (0, 0);
+                for p in sim.pairs() {
+                    let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
+                    if fovea.contains_point(c) {
+                        foveal += 1;
+                        deemed += u32::from(p.status == crate::narrow_phase::PairStatus::Deemed);
+                    }
+                }
+                assert_eq!((r.foveal_pairs, r.foveal_deemed), (foveal, deemed));
+                assert!(foveal > 0);
+                match sim.collider.foveal_known() {
+                    Some(k) => {
+                        assert_eq!(k, foveal);
+                        known += 1;
+                    }
+                    None => tested += 1,
+                }
+            }
+        }
+        assert!(
+            known > 0 && tested > 0,
+            "{known} counted by the pass, {tested} by the metrics"
+        );
     }
 
     /// Renumbering moves bodies, not answers: the renumbered scene is the same scene body for
