@@ -465,27 +465,39 @@ mod tests {
     use crate::perception::{CameraConfig, Display, PerceptualModel};
     use crate::shape::Star;
 
-    #[test]
-    fn sampled_sums_estimate_the_exact_ones_within_their_error_for_any_thread_count() {
-        let cfg = SceneConfig::paper(3_000, 4);
+    /// The first frame of the paper scene with `bodies` bodies: its world, tree, viewer and every
+    /// candidate pair, untested.
+    fn first_frame(bodies: u32, seed: u64) -> (World, SphereTree, Viewer, NarrowPhase) {
+        let cfg = SceneConfig::paper(bodies, seed);
         let world = World::generate(&cfg);
         let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
         let mut bp = BroadPhase::new(tree.root_radius(), world.lo, cfg.volume_side(), world.len());
         let mut np = NarrowPhase::default();
         np.reset(bp.update(&world.position));
-        np.deem_open();
         let viewer = Viewer::new(
             &CameraConfig::default(),
             &Display::default(),
             world.lo,
             cfg.volume_side(),
         );
-        let view = FrameView {
-            viewer: &viewer,
-            fixation_px: viewer.to_pixels(0.5, 0.5),
+        (world, tree, viewer, np)
+    }
+
+    /// The default model's view with the fixation at (`x`, `y`) of the screen.
+    fn view_at(viewer: &Viewer, x: f64, y: f64) -> FrameView<'_> {
+        FrameView {
+            viewer,
+            fixation_px: viewer.to_pixels(x, y),
             model: PerceptualModel::default(),
             uncertainty_deg: 0.0,
-        };
+        }
+    }
+
+    #[test]
+    fn sampled_sums_estimate_the_exact_ones_within_their_error_for_any_thread_count() {
+        let (world, tree, viewer, mut np) = first_frame(3_000, 4);
+        np.deem_open();
+        let view = view_at(&viewer, 0.5, 0.5);
         let fovea = Fovea::new(&viewer, view.fixation_px, 5.0);
         let exact = measure(&np, &tree, &world, Some(&view), Some(&fovea), 1);
         assert_eq!(exact.stride, 1);
@@ -521,12 +533,7 @@ mod tests {
     /// pair (a shed frame's prefix).
     #[test]
     fn counts_and_sample_match_a_pair_by_pair_sum_on_any_thread_count() {
-        let cfg = SceneConfig::paper(20_000, 5);
-        let world = World::generate(&cfg);
-        let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
-        let mut bp = BroadPhase::new(tree.root_radius(), world.lo, cfg.volume_side(), world.len());
-        let mut np = NarrowPhase::default();
-        np.reset(bp.update(&world.position));
+        let (world, tree, viewer, mut np) = first_frame(20_000, 5);
         assert!(
             np.pairs.len() > CHUNK,
             "{} pairs: one run only",
@@ -542,18 +549,7 @@ mod tests {
             &mut |_| true,
         );
         np.deem_open();
-        let viewer = Viewer::new(
-            &CameraConfig::default(),
-            &Display::default(),
-            world.lo,
-            cfg.volume_side(),
-        );
-        let view = FrameView {
-            viewer: &viewer,
-            fixation_px: viewer.to_pixels(0.4, 0.6),
-            model: PerceptualModel::default(),
-            uncertainty_deg: 0.0,
-        };
+        let view = view_at(&viewer, 0.4, 0.6);
         let fovea = Fovea::new(&viewer, view.fixation_px, 5.0);
         let pos = &world.position;
         let centre =
