@@ -61,11 +61,28 @@ pub struct Collider {
 
 /// A wall-clock frame orders its work only if the expected cost of ordering is at most this
 /// share of the time left: above it, gaze-blind round-robin does more good with the same time.
-/// Measured open loop at N = 500 with the priced scheduler: ordering takes about a third of a
-/// frame whose budget is a third of the exact narrow phase, and there it beats round-robin
-/// (0.49x its true P with C = 5 on a quiet machine, 0.93x in the study's side-by-side runs); at
-/// a tenth of the exact narrow phase it takes the whole budget.
+///
+/// The line depends on what the ordering buys, so it is the scheduler's. Priced: measured open
+/// loop at N = 500 (1,231 pairs), ordering costs about 22 us (p10 19, p90 32), half of a frame
+/// whose budget is a third of the exact narrow phase (44-52 us). With the line at a half, that
+/// frame ordered or not by the chance of its own timing, and priced reached 0.88-0.94x
+/// round-robin's true P there; at three quarters it orders and reaches 0.79x (C = 5) and 0.43x
+/// (C = 1) with 0.56x the sphere tests. At a tenth of the exact narrow phase (14 us) the ordering
+/// costs more than the whole budget either way and is shed.
+const PRICED_ORDERING_SHARE: f64 = 0.75;
+
+/// The same line for the paper's priority queue and expected-gain, whose ordering buys less per
+/// microsecond: at a half (the line drawn for priced before) they already do worse than
+/// round-robin in some wall-clock frames, so it is not raised for them.
 const ORDERING_SHARE: f64 = 0.5;
+
+/// The share of the time left that `kind`'s ordering may cost.
+fn ordering_share(kind: crate::config::SchedulerKind) -> f64 {
+    match kind {
+        crate::config::SchedulerKind::Priced => PRICED_ORDERING_SHARE,
+        _ => ORDERING_SHARE,
+    }
+}
 
 /// The first wall-clock frames order whatever the estimate says, so that the cost is learnt from
 /// several frames, not from the first one alone (cold caches, first allocations).
@@ -216,6 +233,9 @@ impl Collider {
             input.viewer.to_pixels(f.x, f.y)
         });
         let mut meter = Meter::new(budget, clock);
+        // The meter starts after the reset, which every scheduler pays: the ordering's cost is
+        // measured from here.
+        let t_meter = clock.now_ns();
         if budget == FrameBudget::Unlimited {
             // Exact: every order gives the same answer, so skip the ordering and resolve every
             // pair, on several threads when the frame is large.
@@ -290,10 +310,9 @@ impl Collider {
         let affordable = match self.ordering_ns_per_pair {
             Some(_) if self.measured < LEARN_FRAMES => true,
             Some(per_pair) => {
-                meter
-                    .wall_left_ns()
-                    .is_none_or(|left| per_pair * n as f64 <= ORDERING_SHARE * left as f64)
-                    || self.shed_streak >= PROBE_EVERY
+                meter.wall_left_ns().is_none_or(|left| {
+                    per_pair * n as f64 <= ordering_share(self.config.scheduler) * left as f64
+                }) || self.shed_streak >= PROBE_EVERY
             }
             None => true,
         };
@@ -340,7 +359,7 @@ impl Collider {
                 self.priorities.reached.max(1)
             };
             if matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_)) && n > 0 {
-                let cost = (t1 - t0 + self.scheduler.ordering_ns()) as f64 / reached as f64;
+                let cost = (t1 - t_meter + self.scheduler.ordering_ns()) as f64 / reached as f64;
                 self.measured = self.measured.saturating_add(1);
                 // Quick to fall, slow to rise: slow outliers are common, fast ones are not.
                 self.ordering_ns_per_pair = Some(match self.ordering_ns_per_pair {
