@@ -55,6 +55,8 @@ pub struct Meter<'c> {
     clock: &'c dyn Clock,
     countdown: u32,
     exhausted: bool,
+    /// The clock's reading when a wall-clock duration started (None for other budgets).
+    started: Option<u64>,
 }
 
 impl std::fmt::Debug for Meter<'_> {
@@ -69,15 +71,19 @@ impl std::fmt::Debug for Meter<'_> {
 impl<'c> Meter<'c> {
     /// A meter for one frame.
     pub fn new(budget: FrameBudget, clock: &'c dyn Clock) -> Self {
-        let budget = match budget {
-            FrameBudget::Wall(_) => budget.starting_at(clock.now_ns()),
-            b => b,
+        let (budget, started) = match budget {
+            FrameBudget::Wall(_) => {
+                let now = clock.now_ns();
+                (budget.starting_at(now), Some(now))
+            }
+            b => (b, None),
         };
         Self {
             budget,
             clock,
             countdown: 0,
             exhausted: false,
+            started,
         }
     }
 
@@ -117,6 +123,13 @@ impl<'c> Meter<'c> {
     #[inline]
     pub fn now_ns(&self) -> u64 {
         self.clock.now_ns()
+    }
+
+    /// When a wall-clock duration started counting (None for other budgets): the clock reading
+    /// the meter took when it was made, so that work timed against the budget needs no read of
+    /// its own.
+    pub fn started_ns(&self) -> Option<u64> {
+        self.started
     }
 
     /// Nanoseconds left before a wall-clock deadline (None for other budgets).

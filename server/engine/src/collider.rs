@@ -233,9 +233,9 @@ impl Collider {
             input.viewer.to_pixels(f.x, f.y)
         });
         let mut meter = Meter::new(budget, clock);
-        // The meter starts after the reset, which every scheduler pays: the ordering's cost is
-        // measured from here.
-        let t_meter = clock.now_ns();
+        // A wall-clock meter starts after the reset, which every scheduler pays: the ordering's
+        // cost is measured from its start (a frame deadline set before the reset counts it).
+        let t_meter = meter.started_ns().unwrap_or(t0);
         if budget == FrameBudget::Unlimited {
             // Exact: every order gives the same answer, so skip the ordering and resolve every
             // pair, on several threads when the frame is large.
