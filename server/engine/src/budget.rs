@@ -146,6 +146,20 @@ impl<'c> Meter<'c> {
     }
 }
 
+/// A clock for tests that advances `.1` nanoseconds at every reading (`.0` holds the last one),
+/// so a frame's timing depends only on how often it reads the clock.
+#[cfg(test)]
+pub(crate) struct Ticking(pub std::cell::Cell<u64>, pub u64);
+
+#[cfg(test)]
+impl Clock for Ticking {
+    fn now_ns(&self) -> u64 {
+        let t = self.0.get() + self.1;
+        self.0.set(t);
+        t
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

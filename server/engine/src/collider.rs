@@ -523,19 +523,12 @@ pub fn true_weight(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::budget::Ticking;
     use crate::{BudgetSpec, FrozenClock, SchedulerKind, Simulation};
     use std::cell::Cell;
 
-    /// A clock that advances 1 µs at every read: the ordering, a handful of reads, costs far more
-    /// than a 2 µs frame can pay.
-    struct Ticking(Cell<u64>);
-    impl Clock for Ticking {
-        fn now_ns(&self) -> u64 {
-            self.0.set(self.0.get() + 1_000);
-            self.0.get()
-        }
-    }
-
+    /// On a clock that advances 1 µs at every read the ordering, a handful of reads, costs far
+    /// more than a 2 µs frame can pay.
     #[test]
     fn an_unaffordable_ordering_is_shed_and_measured_again_every_probe() {
         let mut cfg = SimConfig::default();
@@ -547,7 +540,7 @@ mod tests {
             sim.step(None, &FrozenClock);
         }
         let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
-        let clock = Ticking(Cell::new(0));
+        let clock = Ticking(Cell::new(0), 1_000);
         let fixation = Some(Fixation::at(0.5, 0.5));
         let shed: Vec<bool> = (0..LEARN_FRAMES + 2 * (PROBE_EVERY + 1))
             .map(|_| {

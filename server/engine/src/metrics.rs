@@ -309,10 +309,7 @@ pub fn measure_within(
         };
         let mut total = Sums::default();
         for s in in_runs(&runs, threads, &sample) {
-            total.delta += s.delta;
-            total.p += s.p;
-            total.delta_sq += s.delta_sq;
-            total.p_sq += s.p_sq;
+            total.add(&s);
         }
         m.delta = total.delta;
         m.p = total.p;
@@ -394,6 +391,15 @@ struct Sums {
     p: f64,
     delta_sq: f64,
     p_sq: f64,
+}
+
+impl Sums {
+    fn add(&mut self, o: &Sums) {
+        self.delta += o.delta;
+        self.p += o.p;
+        self.delta_sq += o.delta_sq;
+        self.p_sq += o.p_sq;
+    }
 }
 
 /// `f` over every run, on up to `threads` threads, the results in run order: worker w takes runs

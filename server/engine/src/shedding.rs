@@ -299,7 +299,7 @@ fn screen_rect(region: &Region, viewer: &Viewer, reach: f64) -> [f64; 4] {
 mod tests {
     use super::*;
     use crate::broad_phase::{BroadPhase, BroadPhaseKind};
-    use crate::budget::Clock;
+    use crate::budget::Ticking;
     use crate::config::{BudgetSpec, SceneConfig, SchedulerKind, SimConfig};
     use crate::metrics::Fovea;
     use crate::simulation::Simulation;
@@ -416,15 +416,6 @@ mod tests {
     }
 
     /// A clock that advances by a fixed step at every reading.
-    struct Ticking(Cell<u64>, u64);
-    impl Clock for Ticking {
-        fn now_ns(&self) -> u64 {
-            let t = self.0.get() + self.1;
-            self.0.set(t);
-            t
-        }
-    }
-
     /// A wall-clock budget too small for the whole frame at a large N: the frame ends within the
     /// budget (on a clock that advances at every reading), sheds regions far from the fixation
     /// and none that may hold a foveal pair, settles foveal pairs first, and the audit

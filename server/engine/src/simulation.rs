@@ -439,17 +439,10 @@ mod tests {
     /// budget cut the pass short and the metrics tested the pairs again.
     #[test]
     fn the_foveal_counts_are_exact_whoever_counts_them() {
+        use crate::budget::Ticking;
         use crate::metrics::Fovea;
         use crate::report::FOVEAL_DEG;
         use std::cell::Cell;
-        struct Ticking(Cell<u64>, u64);
-        impl Clock for Ticking {
-            fn now_ns(&self) -> u64 {
-                let t = self.0.get() + self.1;
-                self.0.set(t);
-                t
-            }
-        }
         let (mut known, mut tested) = (0, 0);
         for (budget_ns, fx) in [
             (30_000_000u64, 0.5),
