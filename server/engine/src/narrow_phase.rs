@@ -1268,7 +1268,13 @@ mod tests {
                 calls += 1;
                 calls <= 40
             });
-            assert!(got >= 40 && got < want, "{got} of {want}");
+            // On one thread the stop leaves pairs unresolved; with more, the other threads may
+            // settle every selected pair before the calling thread is asked the 41st time (a
+            // preempted calling thread on a busy machine), so only the bound holds there.
+            assert!(
+                got >= 40 && got <= want && (threads > 1 || got < want),
+                "{got} of {want}"
+            );
             let settled = np
                 .pairs
                 .iter()
