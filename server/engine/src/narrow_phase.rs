@@ -897,8 +897,9 @@ fn next_levels(levels: [u8; 2], depth: u8) -> (bool, [u8; 2]) {
 /// pair, so the expansion stops after the first entry whose children hit (`out[0]` is the first
 /// hit). `out` must hold 8 entries per list entry.
 ///
-/// Children are written unconditionally and kept by advancing the cursor on overlap: overlap
-/// outcomes are close to coin flips, and a branch per test would mispredict half the time.
+/// Children are written without a branch on the outcome (a table lists each four-test mask's
+/// overlapping lanes): overlap outcomes are close to coin flips, and a branch per test would
+/// mispredict half the time.
 #[inline]
 fn expand(
     tree: &SphereTree,
@@ -910,14 +911,20 @@ fn expand(
 ) -> (usize, u64) {
     let mut end = 0;
     let mut tests = 0u64;
+    // While A descends, B's sphere is the same from entry to entry (its root, all the way down
+    // A's tree): it is mapped when it changes, not once per entry.
+    let mut fixed_b = (NONE, Vec4::ZERO);
     for &[sa, sb] in list {
         let kids = tree.kids(if descend_a { sa } else { sb } as usize);
         tests += u64::from(kids.count);
         // The fixed sphere of this entry: B's mapped into A's frame, or A's.
         let fixed = if descend_a {
-            let b = tree.sphere(sb as usize);
-            let c = frame.map(b);
-            Vec4::new(c.x, c.y, c.z, b.w)
+            if fixed_b.0 != sb {
+                let b = tree.sphere(sb as usize);
+                let c = frame.map(b);
+                fixed_b = (sb, Vec4::new(c.x, c.y, c.z, b.w));
+            }
+            fixed_b.1
         } else {
             tree.sphere(sa as usize)
         };
@@ -942,19 +949,20 @@ fn expand(
                 overlap_mask(fx - x, fy - y, fz - z, fr + kids.r[h])
             };
             let base = kids.first as usize + h * LANES;
-            // One bounds check for the four slots; a kept child's slot is the count of kept
-            // lanes before it (at most 3).
+            // One bounds check for the four slots. The kept children are written to the
+            // first slots from a table of each mask's lanes in order, every slot's address
+            // known up front: a running count of the kept lanes as each slot's address made
+            // every store wait for the test before it.
             let slots: &mut [[u16; 2]; LANES] = match out.get_mut(end..end + LANES) {
                 Some(s) => s.try_into().unwrap_or_else(|_| unreachable!()),
                 None => unreachable!("expand: `out` holds 8 slots per entry"),
             };
-            let mut at = 0;
-            for q in 0..LANES {
-                let kid = (base + q) as u16;
-                slots[at & (LANES - 1)] = if descend_a { [kid, sb] } else { [sa, kid] };
-                at += ((mask >> q) & 1) as usize;
+            let kept = &KEPT_LANES[mask as usize & 0xf];
+            for (slot, &q) in slots.iter_mut().zip(kept) {
+                let kid = (base + usize::from(q)) as u16;
+                *slot = if descend_a { [kid, sb] } else { [sa, kid] };
             }
-            end += at;
+            end += (mask & 0xf).count_ones() as usize;
         }
         if at_leaves && end > 0 {
             break;
@@ -962,6 +970,25 @@ fn expand(
     }
     (end, tests)
 }
+
+/// For each 4-bit overlap mask, its set lanes in increasing order, then zeros (slots past the
+/// kept count are written but not kept).
+const KEPT_LANES: [[u8; LANES]; 16] = {
+    let mut table = [[0u8; LANES]; 16];
+    let mut mask = 0;
+    while mask < 16 {
+        let (mut q, mut at) = (0, 0);
+        while q < LANES {
+            if mask & (1 << q) != 0 {
+                table[mask][at] = q as u8;
+                at += 1;
+            }
+            q += 1;
+        }
+        mask += 1;
+    }
+    table
+};
 
 fn resolve(st: &mut PairState, status: PairStatus, level: u8) -> StepOutcome {
     st.status = status;
