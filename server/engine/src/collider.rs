@@ -170,13 +170,17 @@ impl Collider {
     }
 
     /// Read this collider's buffers back into cache, as they would be in a server running it
-    /// frame after frame (see [`crate::warm`]; for the open-loop protocol).
+    /// frame after frame (see [`crate::warm`]; for the open-loop protocol). The pair states go
+    /// last: every frame ends working on them, so in a server they are the most recently used.
+    /// Warmed first, at N = 10,000 they were evicted by the priced scheduler's own buffers
+    /// (more than the cache holds together), and the priced collider's frames that shed their
+    /// ordering did 0.74-0.84x the sphere tests of the round-robin collider in the same time.
     pub fn warm(&self) {
-        self.narrow.warm();
         self.priorities.warm();
         self.scheduler.warm();
         self.fallback.warm();
         crate::warm::lines(self.calibration.bins());
+        self.narrow.warm();
     }
 
     /// Whether the scheduler prioritises, given whether there is a fixation.
