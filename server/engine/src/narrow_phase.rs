@@ -957,12 +957,14 @@ fn expand(
                 Some(s) => s.try_into().unwrap_or_else(|_| unreachable!()),
                 None => unreachable!("expand: `out` holds 8 slots per entry"),
             };
-            let kept = &KEPT_LANES[mask as usize & 0xf];
+            // Four lanes, four bits (the mask says so to the index check too).
+            let mask = mask as usize & (KEPT_LANES.len() - 1);
+            let kept = &KEPT_LANES[mask];
             for (slot, &q) in slots.iter_mut().zip(kept) {
                 let kid = (base + usize::from(q)) as u16;
                 *slot = if descend_a { [kid, sb] } else { [sa, kid] };
             }
-            end += (mask & 0xf).count_ones() as usize;
+            end += mask.count_ones() as usize;
         }
         if at_leaves && end > 0 {
             break;
@@ -973,10 +975,10 @@ fn expand(
 
 /// For each 4-bit overlap mask, its set lanes in increasing order, then zeros (slots past the
 /// kept count are written but not kept).
-const KEPT_LANES: [[u8; LANES]; 16] = {
-    let mut table = [[0u8; LANES]; 16];
+const KEPT_LANES: [[u8; LANES]; 1 << LANES] = {
+    let mut table = [[0u8; LANES]; 1 << LANES];
     let mut mask = 0;
-    while mask < 16 {
+    while mask < 1 << LANES {
         let (mut q, mut at) = (0, 0);
         while q < LANES {
             if mask & (1 << q) != 0 {
