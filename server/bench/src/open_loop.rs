@@ -773,6 +773,9 @@ pub fn run_frames_parts(
                     warm::lines(&input.world.position);
                     warm::lines(&input.world.basis);
                     warm::lines(input.candidates);
+                    if let Some(c) = input.columns {
+                        c.warm();
+                    }
                 }
                 run.collider
                     .collide(&input, Some(fed), fb, clk, &mut r, &mut prof);

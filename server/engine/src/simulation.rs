@@ -217,6 +217,7 @@ impl Simulation {
             tree: &self.tree,
             world: &self.world,
             candidates: self.broad.pairs(),
+            columns: self.broad.columns(),
             viewer: &self.viewer,
         }
     }
@@ -301,6 +302,7 @@ impl Simulation {
             tree: &self.tree,
             world: &self.world,
             candidates: self.broad.pairs(),
+            columns: self.broad.columns(),
             viewer: &self.viewer,
         };
         let foveal_prefix = shedding.map(|_| {
@@ -328,6 +330,7 @@ impl Simulation {
             tree: &self.tree,
             world: &self.world,
             candidates: self.broad.pairs(),
+            columns: self.broad.columns(),
             viewer: &self.viewer,
         };
         // Pairs are listed region by region in the searched order; only the first regions can

@@ -117,7 +117,7 @@ pub struct BroadPhase {
 
 #[derive(Debug, Clone)]
 enum Inner {
-    SweepAndPrune(SweepAndPrune),
+    SweepAndPrune(Box<SweepAndPrune>),
     Grid(Box<Grid>),
 }
 
@@ -134,7 +134,7 @@ impl BroadPhase {
     pub fn with_kind(kind: BroadPhaseKind, half: f64, lo: Vec3, side: f64, bodies: usize) -> Self {
         let inner = match kind.resolve(bodies) {
             BroadPhaseKind::Grid => Inner::Grid(Box::new(Grid::new(half, lo, side, bodies))),
-            _ => Inner::SweepAndPrune(SweepAndPrune::new(half, lo, side, bodies)),
+            _ => Inner::SweepAndPrune(Box::new(SweepAndPrune::new(half, lo, side, bodies))),
         };
         Self { inner }
     }
@@ -244,6 +244,15 @@ impl BroadPhase {
         }
     }
 
+    /// Where each column's pairs lie in [`Self::pairs`]: sweep and prune's; None for the grid,
+    /// whose regions serve the same purpose under a whole-frame budget.
+    pub fn columns(&self) -> Option<&Columns> {
+        match &self.inner {
+            Inner::SweepAndPrune(s) => Some(s.columns()),
+            Inner::Grid(_) => None,
+        }
+    }
+
     /// Whether [`Self::spatial_order`] has one (without building it).
     pub fn has_spatial_order(&self) -> bool {
         matches!(self.inner, Inner::Grid(_))
@@ -298,6 +307,89 @@ impl BroadPhase {
             Inner::SweepAndPrune(s) => s.pair_storage(),
             Inner::Grid(g) => g.pair_storage(),
         }
+    }
+}
+
+/// Runs of a sweep-and-prune column: its bodies against each other, and against each of its four
+/// forward neighbours.
+pub const RUNS: usize = 5;
+
+/// Where the pairs of each sweep-and-prune column lie in the candidate list, down to each body.
+///
+/// The sweep lists the pairs column by column (`c = iz * per_axis + iy`); a column's pairs are
+/// [`RUNS`] runs (the column against itself, then against each forward neighbour), and within a
+/// run they come body by body of the column in order of x, each body's pairs together. So the
+/// pairs whose swept body lies in an x-interval of a column are, in each run, one range of the
+/// candidate list, found by two binary searches over the column's sorted x. A column is a rod
+/// along x through one y-z cell, which the camera (looking down -z) sees as a horizontal band at
+/// one depth: a gaze ordering finds the pairs near the fixation without reading the others (see
+/// [`crate::schedule::rings`]). A by-product of the sweep, in its order; the pairs are unchanged.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Columns {
+    /// Columns per axis (y and z).
+    pub per_axis: usize,
+    /// y and z of the grid's low corner.
+    pub lo: [f64; 2],
+    /// Column width in y and z. Bodies outside the grid are swept in the edge columns.
+    pub cell: f64,
+    /// `per_axis^2 + 1` entries: column `c`'s pairs are `start[c]..start[c + 1]`.
+    pub start: Vec<u32>,
+    /// `per_axis^2 + 1` entries: column `c`'s bodies are `bodies[c]..bodies[c + 1]` of `xs`.
+    pub bodies: Vec<u32>,
+    /// The swept bodies' x, column by column, ascending within a column.
+    pub xs: Vec<f64>,
+    /// Per column, per run, per body `k` of the column: where its pairs start in the candidate
+    /// list (entry `k = m` is the run's end); see [`Self::run`].
+    pub runs: Vec<u32>,
+}
+
+impl Columns {
+    /// Read the index back into cache (see [`crate::warm`]).
+    pub fn warm(&self) {
+        crate::warm::lines(&self.start);
+        crate::warm::lines(&self.bodies);
+        crate::warm::lines(&self.xs);
+        crate::warm::lines(&self.runs);
+    }
+
+    /// Column `c`'s pairs in the candidate list.
+    #[inline]
+    pub fn block(&self, c: usize) -> std::ops::Range<usize> {
+        self.start[c] as usize..self.start[c + 1] as usize
+    }
+
+    /// Column `c`'s (y, z) cell bounds: `([y0, y1], [z0, z1])`.
+    #[inline]
+    pub fn bounds(&self, c: usize) -> ([f64; 2], [f64; 2]) {
+        let (iy, iz) = (c % self.per_axis, c / self.per_axis);
+        let y0 = self.lo[0] + iy as f64 * self.cell;
+        let z0 = self.lo[1] + iz as f64 * self.cell;
+        ([y0, y0 + self.cell], [z0, z0 + self.cell])
+    }
+
+    /// Column `c`'s bodies' x, ascending.
+    #[inline]
+    pub fn xs(&self, c: usize) -> &[f64] {
+        &self.xs[self.bodies[c] as usize..self.bodies[c + 1] as usize]
+    }
+
+    /// Run `r` of column `c`: `m + 1` offsets for its `m` bodies; the pairs of bodies `k0..k1`
+    /// in this run are `run[k0]..run[k1]` of the candidate list.
+    #[inline]
+    pub fn run(&self, c: usize, r: usize) -> &[u32] {
+        let m = (self.bodies[c + 1] - self.bodies[c]) as usize + 1;
+        let base = RUNS * (self.bodies[c] as usize + c) + r * m;
+        &self.runs[base..base + m]
+    }
+
+    /// Number of columns.
+    pub fn len(&self) -> usize {
+        self.per_axis * self.per_axis
+    }
+
+    /// Whether there are no columns.
+    pub fn is_empty(&self) -> bool {
+        self.per_axis == 0
     }
 }
 
@@ -450,6 +542,53 @@ mod tests {
                         prop_assert_eq!(sorted(got), expected.clone(), "{:?}", bp.kind());
                     }
                 }
+                w.integrate(cfg.dt);
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(16))]
+        #[test]
+        fn sweep_and_prune_columns_locate_every_pair_by_its_swept_body(
+            n in 1u32..600, seed in any::<u64>(), radius in 0.05f64..0.6, frames in 0usize..40,
+        ) {
+            let cfg = SceneConfig::paper(n, seed);
+            let mut w = World::generate(&cfg);
+            let half = 1.11 * radius;
+            let mut bp = BroadPhase::with_kind(
+                BroadPhaseKind::SweepAndPrune, half, w.lo, cfg.volume_side(), w.len());
+            prop_assert!(BroadPhase::with_kind(
+                BroadPhaseKind::Grid, half, w.lo, cfg.volume_side(), w.len()).columns().is_none());
+            for _ in 0..=frames {
+                let pairs = bp.update(&w.position).to_vec();
+                let cols = bp.columns().expect("sweep and prune has columns");
+                // The blocks tile the candidate list in column order, and each block is its
+                // runs, back to back.
+                let mut at = 0;
+                for c in 0..cols.len() {
+                    let block = cols.block(c);
+                    prop_assert_eq!(block.start, at);
+                    let xs = cols.xs(c);
+                    prop_assert!(xs.windows(2).all(|p| p[0] <= p[1]));
+                    for r in 0..RUNS {
+                        let run = cols.run(c, r);
+                        prop_assert_eq!(run.len(), xs.len() + 1);
+                        prop_assert_eq!(run[0] as usize, at);
+                        prop_assert!(run.windows(2).all(|p| p[0] <= p[1]));
+                        // Body k's pairs in this run all hold a body at its x.
+                        for (k, &x) in xs.iter().enumerate() {
+                            for &(a, b) in &pairs[run[k] as usize..run[k + 1] as usize] {
+                                let (xa, xb) = (w.position[a as usize].x, w.position[b as usize].x);
+                                prop_assert!(xa == x || xb == x);
+                            }
+                        }
+                        at = run[xs.len()] as usize;
+                    }
+                    prop_assert_eq!(block.end, at);
+                }
+                prop_assert_eq!(at, pairs.len());
+                prop_assert_eq!(cols.xs.len(), w.len());
                 w.integrate(cfg.dt);
             }
         }

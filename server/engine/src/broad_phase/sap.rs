@@ -15,7 +15,7 @@
 //! The order of the pairs this produces is part of the engine's determinism contract at the paper's
 //! N (the schedulers see it), so this file's arithmetic and iteration order are pinned by a test.
 
-use super::PairBuffer;
+use super::{Columns, PairBuffer, RUNS};
 use crate::math::Vec3;
 
 /// Most columns per grid axis: bounds memory for absurdly sparse configs (cells only ever get wider,
@@ -41,6 +41,9 @@ pub(super) struct SweepAndPrune {
     body_column: Vec<u32>,
     moved: Vec<u32>,
     pairs: PairBuffer,
+    /// Where each column's pairs start in `pairs` (the sweep's own bookkeeping, kept for the
+    /// gaze rings, see [`Columns`]).
+    index: Columns,
 }
 
 impl SweepAndPrune {
@@ -60,6 +63,15 @@ impl SweepAndPrune {
             body_column: vec![u32::MAX; bodies],
             moved: Vec::new(),
             pairs: PairBuffer::default(),
+            index: Columns {
+                per_axis: n,
+                lo: [lo.y, lo.z],
+                cell,
+                start: vec![0; n * n + 1],
+                bodies: vec![0; n * n + 1],
+                xs: Vec::new(),
+                runs: Vec::new(),
+            },
         }
     }
 
@@ -130,6 +142,11 @@ impl SweepAndPrune {
         self.pairs.as_slice()
     }
 
+    /// Where each column's pairs lie in [`Self::pairs`].
+    pub(super) fn columns(&self) -> &Columns {
+        &self.index
+    }
+
     fn sweep(&mut self) {
         let n = self.n;
         let reach = self.reach;
@@ -137,22 +154,41 @@ impl SweepAndPrune {
             buf: self.pairs.storage(),
             len: 0,
         };
+        let index = &mut self.index;
+        index.xs.clear();
+        index.runs.clear();
         for iz in 0..n {
             for iy in 0..n {
-                let a = &self.columns[iz * n + iy];
-                sweep_self(a, reach, &mut sink);
+                let c = iz * n + iy;
+                let a = &self.columns[c];
+                index.start[c] = sink.len as u32;
+                index.bodies[c] = index.xs.len() as u32;
+                index.xs.extend(a.iter().map(|e| e.x));
+                // Where each body's pairs start in each of the column's runs (see `Columns`).
+                let m = a.len() + 1;
+                let base = index.runs.len();
+                index.runs.resize(base + RUNS * m, 0);
+                let runs = &mut index.runs[base..];
+                let (own, neighbours) = runs.split_at_mut(m);
+                sweep_self(a, reach, &mut sink, own);
                 // Forward neighbours: each unordered column pair is visited once.
-                for (dy, dz) in [(1i64, 0i64), (-1, 1), (0, 1), (1, 1)] {
+                for ((dy, dz), offsets) in [(1i64, 0i64), (-1, 1), (0, 1), (1, 1)]
+                    .into_iter()
+                    .zip(neighbours.chunks_exact_mut(m))
+                {
                     let (jy, jz) = (iy as i64 + dy, iz as i64 + dz);
                     if jy < 0 || jz < 0 || jy >= n as i64 || jz >= n as i64 {
+                        offsets.fill(sink.len as u32);
                         continue;
                     }
                     let b = &self.columns[jz as usize * n + jy as usize];
-                    sweep_pair(a, b, reach, &mut sink);
+                    sweep_pair(a, b, reach, &mut sink, offsets);
                 }
             }
         }
         let len = sink.len;
+        index.start[n * n] = len as u32;
+        index.bodies[n * n] = index.xs.len() as u32;
         self.pairs.finish(len);
     }
 
@@ -215,8 +251,10 @@ impl PairSink<'_> {
     }
 }
 
-fn sweep_self(a: &[Entry], reach: f64, out: &mut PairSink<'_>) {
+/// `offsets[k]`: where body `k`'s pairs start in `out` (the last entry: the run's end).
+fn sweep_self(a: &[Entry], reach: f64, out: &mut PairSink<'_>, offsets: &mut [u32]) {
     for (i, p) in a.iter().enumerate() {
+        offsets[i] = out.len as u32;
         for q in &a[i + 1..] {
             if q.x - p.x > reach {
                 break;
@@ -224,11 +262,14 @@ fn sweep_self(a: &[Entry], reach: f64, out: &mut PairSink<'_>) {
             out.offer(p, q, reach);
         }
     }
+    offsets[a.len()] = out.len as u32;
 }
 
-fn sweep_pair(a: &[Entry], b: &[Entry], reach: f64, out: &mut PairSink<'_>) {
+/// `offsets` as for [`sweep_self`], for `a`'s bodies.
+fn sweep_pair(a: &[Entry], b: &[Entry], reach: f64, out: &mut PairSink<'_>, offsets: &mut [u32]) {
     let mut start = 0;
-    for p in a {
+    for (k, p) in a.iter().enumerate() {
+        offsets[k] = out.len as u32;
         while start < b.len() && b[start].x < p.x - reach {
             start += 1;
         }
@@ -239,4 +280,5 @@ fn sweep_pair(a: &[Entry], b: &[Entry], reach: f64, out: &mut PairSink<'_>) {
             out.offer(p, q, reach);
         }
     }
+    offsets[a.len()] = out.len as u32;
 }

@@ -10,6 +10,7 @@ mod expected_gain;
 pub mod priced;
 pub mod priority;
 mod priority_queue;
+pub mod rings;
 mod round_robin;
 mod sequential;
 
