@@ -155,20 +155,25 @@ impl SweepAndPrune {
             len: 0,
         };
         let index = &mut self.index;
-        index.xs.clear();
-        index.runs.clear();
+        // Sized once per frame (a no-op when the body count is unchanged), then written in place.
+        let bodies: usize = self.columns.iter().map(Vec::len).sum();
+        index.xs.resize(bodies, 0.0);
+        index.runs.resize(RUNS * (bodies + n * n), 0);
+        let (mut xs_at, mut runs_at) = (0, 0);
         for iz in 0..n {
             for iy in 0..n {
                 let c = iz * n + iy;
                 let a = &self.columns[c];
                 index.start[c] = sink.len as u32;
-                index.bodies[c] = index.xs.len() as u32;
-                index.xs.extend(a.iter().map(|e| e.x));
+                index.bodies[c] = xs_at as u32;
+                for (x, e) in index.xs[xs_at..xs_at + a.len()].iter_mut().zip(a) {
+                    *x = e.x;
+                }
+                xs_at += a.len();
                 // Where each body's pairs start in each of the column's runs (see `Columns`).
                 let m = a.len() + 1;
-                let base = index.runs.len();
-                index.runs.resize(base + RUNS * m, 0);
-                let runs = &mut index.runs[base..];
+                let runs = &mut index.runs[runs_at..runs_at + RUNS * m];
+                runs_at += RUNS * m;
                 let (own, neighbours) = runs.split_at_mut(m);
                 sweep_self(a, reach, &mut sink, own);
                 // Forward neighbours: each unordered column pair is visited once.
@@ -188,7 +193,7 @@ impl SweepAndPrune {
         }
         let len = sink.len;
         index.start[n * n] = len as u32;
-        index.bodies[n * n] = index.xs.len() as u32;
+        index.bodies[n * n] = xs_at as u32;
         self.pairs.finish(len);
     }
 
