@@ -104,8 +104,9 @@ pub struct FrameReport {
     pub foveal_deemed: u32,
     /// The budget ran out before every pair was resolved.
     pub budget_exhausted: bool,
-    /// The wall-clock budget could not pay for ordering the pairs by gaze: this frame was
-    /// scheduled gaze-blind round-robin instead.
+    /// The wall-clock budget could not pay for the scheduler's ordering: this frame was scheduled
+    /// round-robin instead, nearest the fixation first where the broad phase locates its pairs by
+    /// column and that placing fitted the time left (see `schedule::rings`), gaze-blind otherwise.
     pub ordering_shed: bool,
     /// Broad-phase regions a whole-frame wall-clock budget did not reach (see `shedding`): their
     /// pairs were not searched, collided or responded to this frame. 0 under other budgets.
