@@ -53,7 +53,7 @@ pub struct Collider {
     rings: crate::schedule::rings::Rings,
     /// Measured cost of placing the rings, ns (moving average, quick to fall).
     rings_ns: Option<f64>,
-    /// Shed frames in a row that could not pay for the rings either.
+    /// Shed frames that could not pay for the rings since they were last placed.
     rings_skipped: u32,
     /// Frames that placed the rings (the first [`LEARN_FRAMES`] place them whatever the
     /// estimate says: the first placing runs on cold caches).
@@ -400,10 +400,11 @@ impl Collider {
             }
         } else {
             // Shed: round-robin, nearest the fixation first where the broad phase has columns
-            // to find those pairs by (see `schedule::rings`), in candidate order otherwise.
-            // The placing costs a few nanoseconds per column and per near pair; a frame too
-            // short to pay for it (measured, like the ordering, with a probe every PROBE_EVERY
-            // frames) runs plain round-robin.
+            // to find those pairs by and the scheduler is one that uses gaze (see
+            // `schedule::rings`), in candidate order otherwise. The placing costs a few dozen
+            // flops per column and a pass over the x of the bodies of the columns near the
+            // fixation; a frame too short to pay for it (measured, like the ordering, with a
+            // probe every PROBE_EVERY frames) runs plain round-robin.
             let rings_affordable = self.rings_measured < LEARN_FRAMES
                 || self.rings_ns.is_none_or(|ns| {
                     meter
@@ -411,10 +412,13 @@ impl Collider {
                         .is_none_or(|left| ns <= RINGS_SHARE * left as f64)
                 })
                 || self.rings_skipped >= PROBE_EVERY;
-            match (input.columns, fixation_px) {
+            let columns = input
+                .columns
+                .filter(|c| self.config.scheduler.needs_priority() && c.covers(n));
+            match (columns, fixation_px) {
                 (Some(columns), Some(px)) if rings_affordable => {
                     self.rings_skipped = 0;
-                    self.rings.run(
+                    r.gaze_rings = self.rings.run(
                         &mut self.narrow,
                         &work,
                         columns,
@@ -423,13 +427,17 @@ impl Collider {
                         uncertainty_deg,
                         &mut meter,
                     );
-                    let ns = self.rings.setup_ns() as f64;
-                    self.rings_measured = self.rings_measured.saturating_add(1);
-                    self.rings_ns = Some(match self.rings_ns {
-                        Some(old) if ns < old => ns,
-                        Some(old) => 0.8 * old + 0.2 * ns,
-                        None => ns,
-                    });
+                    if !r.gaze_rings {
+                        self.fallback.run(&mut self.narrow, &work, &mut meter);
+                    } else {
+                        let ns = self.rings.setup_ns() as f64;
+                        self.rings_measured = self.rings_measured.saturating_add(1);
+                        self.rings_ns = Some(match self.rings_ns {
+                            Some(old) if ns < old => ns,
+                            Some(old) => 0.8 * old + 0.2 * ns,
+                            None => ns,
+                        });
+                    }
                 }
                 (Some(_), Some(_)) => {
                     self.rings_skipped += 1;
@@ -596,6 +604,52 @@ mod tests {
 
     /// On a clock that advances 1 µs at every read the ordering, a handful of reads, costs far
     /// more than a 2 µs frame can pay.
+    #[test]
+    fn shed_frames_take_the_gaze_rings_and_sphere_test_budgets_never_do() {
+        let mut cfg = SimConfig::default();
+        cfg.scene.bodies = 200;
+        cfg.budget = BudgetSpec::Exact;
+        let mut sim = Simulation::new(cfg.clone()).expect("valid");
+        for _ in 0..5 {
+            sim.step(None, &FrozenClock);
+        }
+        let clock = Ticking(Cell::new(0), 1_000);
+        let fixation = Some(Fixation::at(0.5, 0.5));
+        for kind in [SchedulerKind::Priced, SchedulerKind::RoundRobin] {
+            cfg.scheduler = kind;
+            let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+            let mut rings = 0;
+            for _ in 0..LEARN_FRAMES + 5 {
+                let r = col.evaluate(
+                    &sim.frame_input(),
+                    fixation,
+                    FrameBudget::Wall(2_000),
+                    &clock,
+                );
+                assert!(r.ordering_shed || !r.gaze_rings);
+                rings += usize::from(r.gaze_rings);
+            }
+            // The priced collider sheds its ordering here and places the rings (the first shed
+            // frames whatever their cost, to learn it); gaze-blind round-robin never does.
+            if kind == SchedulerKind::Priced {
+                assert!(rings >= LEARN_FRAMES as usize, "{rings}");
+            } else {
+                assert_eq!(rings, 0);
+            }
+            // Sphere-test budgets never shed, so they never take the rings: they stay
+            // deterministic whatever the wall-clock frames before them learnt.
+            for tests in [0, 100, 1_000] {
+                let r = col.evaluate(
+                    &sim.frame_input(),
+                    fixation,
+                    FrameBudget::Tests(tests),
+                    &FrozenClock,
+                );
+                assert!(!r.ordering_shed && !r.gaze_rings);
+            }
+        }
+    }
+
     #[test]
     fn an_unaffordable_ordering_is_shed_and_measured_again_every_probe() {
         let mut cfg = SimConfig::default();

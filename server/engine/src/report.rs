@@ -108,6 +108,9 @@ pub struct FrameReport {
     /// round-robin instead, nearest the fixation first where the broad phase locates its pairs by
     /// column and that placing fitted the time left (see `schedule::rings`), gaze-blind otherwise.
     pub ordering_shed: bool,
+    /// Of the frames whose ordering was shed, those scheduled round-robin nearest the fixation
+    /// first (see `schedule::rings`).
+    pub gaze_rings: bool,
     /// Broad-phase regions a whole-frame wall-clock budget did not reach (see `shedding`): their
     /// pairs were not searched, collided or responded to this frame. 0 under other budgets.
     pub stale_regions: u32,

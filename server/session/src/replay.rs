@@ -152,6 +152,7 @@ pub fn compare(recorded: &FrameRecord, replayed: &FrameReport, exact: bool) -> O
             foveal_deemed,
             budget_exhausted,
             ordering_shed,
+            gaze_rings,
             audit,
         );
     }

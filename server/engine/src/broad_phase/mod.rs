@@ -320,10 +320,14 @@ pub const RUNS: usize = 5;
 /// [`RUNS`] runs (the column against itself, then against each forward neighbour), and within a
 /// run they come body by body of the column in order of x, each body's pairs together. So the
 /// pairs whose swept body lies in an x-interval of a column are, in each run, one range of the
-/// candidate list, found by two binary searches over the column's sorted x. A column is a rod
-/// along x through one y-z cell, which the camera (looking down -z) sees as a horizontal band at
-/// one depth: a gaze ordering finds the pairs near the fixation without reading the others (see
+/// candidate list, whose ends are counted off the column's sorted x. A column is a rod along x
+/// through one y-z cell, which the camera (looking down -z) sees as a horizontal band at one
+/// depth: a gaze ordering finds the pairs near the fixation without reading the others (see
 /// [`crate::schedule::rings`]). A by-product of the sweep, in its order; the pairs are unchanged.
+///
+/// A body outside the grid is swept in the edge column it clamps to, so it lies outside that
+/// column's cell: the index still lists its pairs, a gaze ordering may just place them farther
+/// from the fixation than they are (the engine keeps bodies in the volume).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Columns {
     /// Columns per axis (y and z).
@@ -332,6 +336,11 @@ pub struct Columns {
     pub lo: [f64; 2],
     /// Column width in y and z. Bodies outside the grid are swept in the edge columns.
     pub cell: f64,
+    /// Half the boxes' reach (their half-size): a pair's centre is within this of each of its
+    /// bodies on every axis.
+    pub half_reach: f64,
+    /// Columns holding at least one body.
+    pub nonempty: usize,
     /// `per_axis^2 + 1` entries: column `c`'s pairs are `start[c]..start[c + 1]`.
     pub start: Vec<u32>,
     /// `per_axis^2 + 1` entries: column `c`'s bodies are `bodies[c]..bodies[c + 1]` of `xs`.
@@ -358,15 +367,6 @@ impl Columns {
         self.start[c] as usize..self.start[c + 1] as usize
     }
 
-    /// Column `c`'s (y, z) cell bounds: `([y0, y1], [z0, z1])`.
-    #[inline]
-    pub fn bounds(&self, c: usize) -> ([f64; 2], [f64; 2]) {
-        let (iy, iz) = (c % self.per_axis, c / self.per_axis);
-        let y0 = self.lo[0] + iy as f64 * self.cell;
-        let z0 = self.lo[1] + iz as f64 * self.cell;
-        ([y0, y0 + self.cell], [z0, z0 + self.cell])
-    }
-
     /// Column `c`'s bodies' x, ascending.
     #[inline]
     pub fn xs(&self, c: usize) -> &[f64] {
@@ -380,6 +380,11 @@ impl Columns {
         let m = (self.bodies[c + 1] - self.bodies[c]) as usize + 1;
         let base = RUNS * (self.bodies[c] as usize + c) + r * m;
         &self.runs[base..base + m]
+    }
+
+    /// Whether the index describes a candidate list of `pairs` pairs (the last update's).
+    pub fn covers(&self, pairs: usize) -> bool {
+        self.start.len() == self.len() + 1 && self.start.last() == Some(&(pairs as u32))
     }
 
     /// Number of columns.

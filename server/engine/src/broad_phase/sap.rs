@@ -67,6 +67,8 @@ impl SweepAndPrune {
                 per_axis: n,
                 lo: [lo.y, lo.z],
                 cell,
+                half_reach: half,
+                nonempty: 0,
                 start: vec![0; n * n + 1],
                 bodies: vec![0; n * n + 1],
                 xs: Vec::new(),
@@ -156,16 +158,18 @@ impl SweepAndPrune {
         };
         let index = &mut self.index;
         // Sized once per frame (a no-op when the body count is unchanged), then written in place.
-        let bodies: usize = self.columns.iter().map(Vec::len).sum();
+        let bodies = self.body_column.len();
         index.xs.resize(bodies, 0.0);
         index.runs.resize(RUNS * (bodies + n * n), 0);
         let (mut xs_at, mut runs_at) = (0, 0);
+        index.nonempty = 0;
         for iz in 0..n {
             for iy in 0..n {
                 let c = iz * n + iy;
                 let a = &self.columns[c];
                 index.start[c] = sink.len as u32;
                 index.bodies[c] = xs_at as u32;
+                index.nonempty += usize::from(!a.is_empty());
                 for (x, e) in index.xs[xs_at..xs_at + a.len()].iter_mut().zip(a) {
                     *x = e.x;
                 }
