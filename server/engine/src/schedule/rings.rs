@@ -32,9 +32,10 @@ use crate::budget::Meter;
 use crate::narrow_phase::{NarrowPhase, StepOutcome};
 use crate::perception::Viewer;
 
-/// Ring half-widths, degrees of visual angle, nearest first: the fovea's radius, where the steep
-/// end of the scheduling model's fall-off (C = 1 degree) has lost most of its weight, and where
-/// its shallow end (C = 10) still weighs a pair about half. The rings are squares in pixels,
+/// Ring half-widths, degrees of visual angle, nearest first: about the fovea; where the steep end
+/// of the scheduling model's fall-off (F2, exp(-e / C), with C = 1 degree) is down to 1%; and
+/// where its shallow end (C = 10) still weighs a pair about a third. Measured against 3/8/20,
+/// 2/6/20 and 1.5/4/9 (docs/BENCHMARKS.md): none better. The rings are squares in pixels,
 /// converted at the screen centre, where a degree spans the fewest pixels: away from the centre
 /// a ring spans somewhat fewer degrees than its name.
 pub const RINGS_DEG: [f64; 3] = [2.0, 5.0, 12.0];
