@@ -51,19 +51,11 @@ pub struct Collider {
     fallback: Box<dyn Scheduler>,
     /// The cheap gaze order of those frames, where the broad phase has columns.
     rings: crate::schedule::rings::Rings,
-    /// Measured cost of placing the rings, ns (moving average, quick to fall).
-    rings_ns: Option<f64>,
-    /// Shed frames that could not pay for the rings since they were last placed.
-    rings_skipped: u32,
-    /// Frames that placed the rings (the first [`LEARN_FRAMES`] place them whatever the
-    /// estimate says: the first placing runs on cold caches).
-    rings_measured: u32,
-    /// Measured cost of prioritising and ordering, ns per candidate pair (moving average).
-    ordering_ns_per_pair: Option<f64>,
-    /// Wall-clock frames shed in a row since the ordering was last measured.
-    shed_streak: u32,
-    /// Wall-clock frames whose ordering was measured.
-    measured: u32,
+    /// What placing the rings costs (ns), learnt from the shed frames that placed them.
+    rings_cost: CostGate,
+    /// What prioritising and ordering cost (ns per candidate pair), learnt from the wall-clock
+    /// frames that ordered.
+    ordering_cost: CostGate,
     /// The last foveal pass: pairs it settled and the time it took (ns).
     foveal_pass: Option<(u32, u64)>,
     /// The last frame's foveal pairs, when its foveal pass selected exactly the pairs the
@@ -114,6 +106,51 @@ pub const LEARN_FRAMES: u32 = 3;
 /// enough that the probes' own cost (a frame that may spend its budget on ordering) stays near 1%.
 const PROBE_EVERY: u32 = 240;
 
+/// What a frame's optional work costs, learnt from the frames that did it, and whether a frame
+/// can pay for it: the ordering, and the gaze rings of the frames that shed it. One slow frame (a
+/// cold cache, the first frame's allocations, a preemption) must not shed the work for good, so
+/// the first [`LEARN_FRAMES`] do it whatever the estimate says and every [`PROBE_EVERY`]-th
+/// frame in a row that would not does it anyway and measures again.
+#[derive(Debug, Clone, Copy, Default)]
+struct CostGate {
+    /// The learnt cost: a moving average, quick to fall and slow to rise (slow outliers are
+    /// common, fast ones are not).
+    cost: Option<f64>,
+    /// Frames that did the work and measured it.
+    measured: u32,
+    /// Frames in a row that could not pay for it.
+    streak: u32,
+}
+
+impl CostGate {
+    /// Whether work of `scale` times the learnt cost fits in `allowance` (None: no limit),
+    /// which is asked for only when it matters: it reads the clock.
+    fn allows(&self, scale: f64, allowance: impl FnOnce() -> Option<f64>) -> bool {
+        match self.cost {
+            Some(_) if self.measured < LEARN_FRAMES => true,
+            Some(cost) => {
+                allowance().is_none_or(|a| cost * scale <= a) || self.streak >= PROBE_EVERY
+            }
+            None => true,
+        }
+    }
+
+    /// Whether this frame did the work (a frame that could not pay lengthens the streak).
+    fn record(&mut self, done: bool) {
+        self.streak = if done { 0 } else { self.streak + 1 };
+    }
+
+    /// Learn from a frame that did the work at `cost`.
+    fn learn(&mut self, cost: f64) {
+        self.measured = self.measured.saturating_add(1);
+        self.cost = Some(match self.cost {
+            Some(old) if cost < old => cost,
+            Some(old) => 0.8 * old + 0.2 * cost,
+            None => cost,
+        });
+    }
+}
+
 impl Collider {
     /// A collider for `config` (its scheduler, models, threshold and audit switch; the budget is
     /// handed to each call) over `tree` and `viewer`.
@@ -146,12 +183,8 @@ impl Collider {
                 schedule::PricedOptions::default(),
             ),
             rings: Default::default(),
-            rings_ns: None,
-            rings_skipped: 0,
-            rings_measured: 0,
-            ordering_ns_per_pair: None,
-            shed_streak: 0,
-            measured: 0,
+            rings_cost: CostGate::default(),
+            ordering_cost: CostGate::default(),
             foveal_pass: None,
             foveal_known: None,
             config: config.clone(),
@@ -334,19 +367,12 @@ impl Collider {
         }
         // Under a wall-clock budget too small to pay for ordering the pairs, ordering them would
         // leave less time for the tests than it is worth: shed it, run round-robin, and say so.
-        // The cost is learnt from frames that ordered; one slow frame (a cold cache, the first
-        // frame's allocations, a preemption) must not shed the ordering for good, so every
-        // PROBE_EVERY-th frame in a row that would shed orders anyway and measures again.
-        let affordable = match self.ordering_ns_per_pair {
-            Some(_) if self.measured < LEARN_FRAMES => true,
-            Some(per_pair) => {
-                meter.wall_left_ns().is_none_or(|left| {
-                    per_pair * n as f64 <= ordering_share(self.config.scheduler) * left as f64
-                }) || self.shed_streak >= PROBE_EVERY
-            }
-            None => true,
-        };
-        self.shed_streak = if affordable { 0 } else { self.shed_streak + 1 };
+        // The cost is learnt from frames that ordered (see `CostGate`).
+        let share = ordering_share(self.config.scheduler);
+        let affordable = self.ordering_cost.allows(n as f64, || {
+            meter.wall_left_ns().map(|left| share * left as f64)
+        });
+        self.ordering_cost.record(affordable);
         let prioritised = affordable && self.prioritises(fixation_px.is_some());
         r.ordering_shed = !affordable;
         let uncertainty_deg = fixation.map_or(0.0, |f| f.clamped().uncertainty_deg);
@@ -390,34 +416,24 @@ impl Collider {
             };
             if matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_)) && n > 0 {
                 let cost = (t1 - t_meter + self.scheduler.ordering_ns()) as f64 / reached as f64;
-                self.measured = self.measured.saturating_add(1);
-                // Quick to fall, slow to rise: slow outliers are common, fast ones are not.
-                self.ordering_ns_per_pair = Some(match self.ordering_ns_per_pair {
-                    Some(old) if cost < old => cost,
-                    Some(old) => 0.8 * old + 0.2 * cost,
-                    None => cost,
-                });
+                self.ordering_cost.learn(cost);
             }
         } else {
             // Shed: round-robin, nearest the fixation first where the broad phase has columns
             // to find those pairs by and the scheduler is one that uses gaze (see
             // `schedule::rings`), in candidate order otherwise. The placing costs a few dozen
             // flops per column and a pass over the x of the bodies of the columns near the
-            // fixation; a frame too short to pay for it (measured, like the ordering, with a
-            // probe every PROBE_EVERY frames) runs plain round-robin.
-            let rings_affordable = self.rings_measured < LEARN_FRAMES
-                || self.rings_ns.is_none_or(|ns| {
-                    meter
-                        .wall_left_ns()
-                        .is_none_or(|left| ns <= RINGS_SHARE * left as f64)
-                })
-                || self.rings_skipped >= PROBE_EVERY;
+            // fixation; a frame too short to pay for it (learnt like the ordering's cost, see
+            // `CostGate`) runs plain round-robin.
+            let rings_affordable = self.rings_cost.allows(1.0, || {
+                meter.wall_left_ns().map(|left| RINGS_SHARE * left as f64)
+            });
             let columns = input
                 .columns
                 .filter(|c| self.config.scheduler.needs_priority() && c.covers(n));
             match (columns, fixation_px) {
                 (Some(columns), Some(px)) if rings_affordable => {
-                    self.rings_skipped = 0;
+                    self.rings_cost.record(true);
                     r.gaze_rings = self.rings.run(
                         &mut self.narrow,
                         &work,
@@ -430,17 +446,11 @@ impl Collider {
                     if !r.gaze_rings {
                         self.fallback.run(&mut self.narrow, &work, &mut meter);
                     } else {
-                        let ns = self.rings.setup_ns() as f64;
-                        self.rings_measured = self.rings_measured.saturating_add(1);
-                        self.rings_ns = Some(match self.rings_ns {
-                            Some(old) if ns < old => ns,
-                            Some(old) => 0.8 * old + 0.2 * ns,
-                            None => ns,
-                        });
+                        self.rings_cost.learn(self.rings.setup_ns() as f64);
                     }
                 }
                 (Some(_), Some(_)) => {
-                    self.rings_skipped += 1;
+                    self.rings_cost.record(false);
                     self.fallback.run(&mut self.narrow, &work, &mut meter);
                 }
                 _ => self.fallback.run(&mut self.narrow, &work, &mut meter),
