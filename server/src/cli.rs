@@ -62,9 +62,9 @@ pub struct Cli {
     /// `sweep-and-prune` or `grid`.
     #[arg(long, env = "FOVEAL_BROAD_PHASE", default_value = "auto", value_parser = parse_broad_phase)]
     pub broad_phase: BroadPhaseKind,
-    /// Per-frame narrow-phase budget: `exact`, `zero` (deem every pair), `<ms>ms` (wall clock,
-    /// e.g. `2.5ms`), `<n>tests` (sphere tests, e.g. `20000tests`), or `<f>x` (fraction of the
-    /// exact cost, e.g. `0.3x`).
+    /// Per-frame budget: `exact`, `zero` (deem every pair), `<ms>ms` (wall clock for the whole
+    /// frame, integration to metrics, e.g. `2.5ms`), `<n>tests` (sphere tests in the narrow
+    /// phase, e.g. `20000tests`), or `<f>x` (fraction of the exact cost, e.g. `0.3x`).
     #[arg(long, env = "FOVEAL_BUDGET", default_value = DEFAULT_BUDGET)]
     pub budget: BudgetArg,
     /// Frames per second the loop runs at.

@@ -226,8 +226,10 @@ impl Simulation {
     /// no perceptual work is done and P is not measured). `clock` times the phases and enforces a
     /// wall-clock budget; pass [`FrozenClock`] for deterministic runs.
     ///
-    /// A wall-clock budget covers the whole frame. Where the scene's broad phase has regions (the
-    /// grid, at large N), the frame sheds what does not fit in perceptual order (see
+    /// A wall-clock budget covers the whole frame: at every N the narrow phase stops early enough
+    /// for the learnt tail (response and metrics), and Δ and P are summed over a sample when
+    /// every deemed pair would not fit. Where the scene's broad phase has regions (the grid, at
+    /// large N), the frame also sheds what does not fit in perceptual order (see
     /// [`crate::shedding`]) and reports it ([`FrameReport::stale_regions`]); sphere-test and exact
     /// budgets run every phase whole.
     pub fn step(&mut self, fixation: Option<Fixation>, clock: &dyn Clock) -> &FrameReport {
@@ -294,7 +296,9 @@ impl Simulation {
         profile.broad_ns = t2 - t1;
 
         let pairs = self.broad.pairs().len();
-        let narrow_budget = match shedding {
+        // Under a wall-clock budget the narrow phase stops early enough for the learnt tail
+        // (deeming, response, metrics) at every N: the budget covers the whole frame.
+        let narrow_budget = match deadline {
             Some((end, _)) => FrameBudget::Deadline(self.shedder.narrow_deadline(end, pairs)),
             None => budget,
         };
@@ -335,12 +339,15 @@ impl Simulation {
         };
         // Pairs are listed region by region in the searched order; only the first regions can
         // hold foveal pairs.
-        let effort = match (shedding, foveal_prefix) {
-            (Some((_, ns)), Some(prefix)) => crate::metrics::Effort {
+        // Under a wall-clock budget Δ and P are summed over a sample sized to the budget where
+        // summing every deemed pair would not fit (the report gives the stride and the standard
+        // errors; `measure_exactly` sums them all, off the clock).
+        let effort = match deadline {
+            Some((_, ns)) => crate::metrics::Effort {
                 foveal_known: self.collider.foveal_known(),
-                ..Shedder::effort(ns, prefix)
+                ..Shedder::effort(ns, foveal_prefix.unwrap_or(usize::MAX))
             },
-            _ => crate::metrics::Effort::default(),
+            None => crate::metrics::Effort::default(),
         };
         self.collider
             .measure_within(&input, fixation, effort, &mut r);
@@ -351,7 +358,7 @@ impl Simulation {
         }
         let t5 = clock.now_ns();
         profile.measure_ns = t5 - t4;
-        if shedding.is_some() {
+        if deadline.is_some() {
             // The tail: from where the narrow phase had to stop (or stopped) to the frame's end.
             let narrow_end = match narrow_budget {
                 FrameBudget::Deadline(d) if r.budget_exhausted => d,
@@ -366,6 +373,32 @@ impl Simulation {
         }
         r.profile = profile;
         self.report = r;
+        &self.report
+    }
+
+    /// The last frame's report with Δ and P summed over every deemed pair, computed off the
+    /// clock. A wall-clock frame sums a sample where every pair would not fit its budget
+    /// ([`FrameReport::metrics_stride`] > 1, with standard errors); a study that reports these
+    /// figures needs them whole. The frame's timings, counts and audit are kept as they were.
+    pub fn measure_exactly(&mut self) -> &FrameReport {
+        if self.report.metrics_stride > 1 {
+            let mut r = self.report.clone();
+            let input = FrameInput {
+                tree: &self.tree,
+                world: &self.world,
+                candidates: self.broad.pairs(),
+                columns: self.broad.columns(),
+                viewer: &self.viewer,
+            };
+            self.collider.measure_within(
+                &input,
+                r.fixation,
+                crate::metrics::Effort::default(),
+                &mut r,
+            );
+            r.audit = self.report.audit.take();
+            self.report = r;
+        }
         &self.report
     }
 
@@ -435,6 +468,97 @@ mod tests {
             .into_iter()
             .map(|p| sim.id_pair(p))
             .collect()
+    }
+
+    /// A wall-clock budget at the paper's N (sweep and prune: nothing to shed but the narrow
+    /// phase) covers the frame's tail too: after the first frames have learnt what deeming,
+    /// response and metrics cost, the narrow phase stops early enough that the frame ends by its
+    /// deadline. The clock advances at every reading, so the tail costs its readings.
+    #[test]
+    fn a_wall_clock_frame_at_the_papers_n_ends_by_its_deadline_tail_included() {
+        let budget_ns = 200_000;
+        let mut sim = Simulation::new(SimConfig {
+            scene: SceneConfig::paper(500, 3),
+            scheduler: crate::config::SchedulerKind::RoundRobin,
+            budget: BudgetSpec::WallMs(budget_ns as f64 * 1e-6),
+            ..SimConfig::default()
+        })
+        .expect("valid");
+        assert!(sim.broad.regions().is_empty(), "sweep and prune at N = 500");
+        let tick = 5_000;
+        let clock = crate::budget::Ticking(std::cell::Cell::new(0), tick);
+        let fixation = Some(Fixation::at(0.5, 0.5));
+        for frame in 0..8 {
+            let start = clock.0.get();
+            let r = sim.step(fixation, &clock);
+            let spent = clock.0.get() - start;
+            assert!(r.budget_exhausted && r.deemed > 0, "frame {frame}: not cut");
+            if frame >= 2 {
+                assert!(
+                    spent <= budget_ns + tick,
+                    "frame {frame} took {spent} ns of a {budget_ns} ns budget"
+                );
+            }
+        }
+    }
+
+    /// A wall-clock frame that sums Δ and P over a sample says so, and [`Simulation::measure_exactly`]
+    /// gives the sums over every deemed pair: the same as measuring the frame without a budget
+    /// for the metrics, and within four standard errors of the sample's estimate.
+    #[test]
+    fn a_sampled_frame_is_measured_exactly_on_request() {
+        let mut sim = Simulation::new(SimConfig {
+            scene: SceneConfig::paper(500, 4),
+            scheduler: crate::config::SchedulerKind::RoundRobin,
+            budget: BudgetSpec::WallMs(0.02),
+            ..SimConfig::default()
+        })
+        .expect("valid");
+        let clock = crate::budget::Ticking(std::cell::Cell::new(0), 500);
+        let fixation = Some(Fixation::at(0.4, 0.6));
+        let mut sampled = 0;
+        for _ in 0..6 {
+            let est = sim.step(fixation, &clock).clone();
+            if est.metrics_stride <= 1 {
+                continue;
+            }
+            sampled += 1;
+            let mut want = est.clone();
+            let input = FrameInput {
+                tree: &sim.tree,
+                world: &sim.world,
+                candidates: sim.broad.pairs(),
+                columns: sim.broad.columns(),
+                viewer: &sim.viewer,
+            };
+            sim.collider.measure(&input, est.fixation, &mut want);
+            let got = sim.measure_exactly().clone();
+            assert_eq!(got.metrics_stride, 1);
+            assert_eq!(got.geometric_inaccuracy_se, 0.0);
+            assert_eq!(got.perceived_inaccuracy_se, Some(0.0));
+            assert_eq!(got.geometric_inaccuracy, want.geometric_inaccuracy);
+            assert_eq!(got.perceived_inaccuracy, want.perceived_inaccuracy);
+            assert_eq!(
+                (got.deemed, got.sphere_tests, got.profile),
+                (est.deemed, est.sphere_tests, est.profile),
+                "the frame itself is kept"
+            );
+            let (p, p_est) = (
+                got.perceived_inaccuracy.expect("a fixation"),
+                est.perceived_inaccuracy.expect("a fixation"),
+            );
+            let se = est.perceived_inaccuracy_se.expect("a fixation");
+            assert!(
+                se > 0.0 && (p - p_est).abs() <= 4.0 * se,
+                "P {p} vs {p_est} ± {se}"
+            );
+            let (d, d_est) = (got.geometric_inaccuracy, est.geometric_inaccuracy);
+            assert!(
+                (d - d_est).abs() <= 4.0 * est.geometric_inaccuracy_se,
+                "Δ {d} vs {d_est}"
+            );
+        }
+        assert!(sampled >= 3, "only {sampled} frames sampled");
     }
 
     /// Under a whole-frame budget the report's foveal counts are those of the pairs themselves,
