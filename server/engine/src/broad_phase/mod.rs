@@ -10,7 +10,8 @@
 //! - [`BroadPhaseKind::Grid`] (`grid.rs`): a uniform grid keyed by the fixed box size, counting-sorted
 //!   into flat arrays every frame. At a million bodies the sorted lists of sweep and prune are
 //!   scattered through memory and their repair is dominated by cache misses; the grid's passes are
-//!   forward scans, and its pair search can be split over threads with an identical output.
+//!   forward scans, and its pair search can be split over threads with an identical output (as can
+//!   sweep and prune's sweep).
 //!
 //! [`BroadPhaseKind::Auto`] picks sweep and prune below [`AUTO_GRID_MIN_BODIES`] and the grid from
 //! there on.
@@ -148,12 +149,13 @@ impl BroadPhase {
     }
 
     /// Threads for the update (1 = the calling thread only; 0 is taken as 1). The output is
-    /// identical, pair for pair and in the same order, for any count. Only the grid uses more than
-    /// one (for its sort and its pair search), and only with at least 20,000 bodies per thread;
-    /// sweep and prune always runs on the calling thread.
+    /// identical, pair for pair and in the same order, for any count. The grid uses them for its
+    /// sort and its pair search with at least 20,000 bodies per thread; sweep and prune for its
+    /// sweep with at least 4,000.
     pub fn set_threads(&mut self, threads: usize) {
-        if let Inner::Grid(g) = &mut self.inner {
-            g.set_threads(threads);
+        match &mut self.inner {
+            Inner::SweepAndPrune(s) => s.set_threads(threads),
+            Inner::Grid(g) => g.set_threads(threads),
         }
     }
 
@@ -296,8 +298,9 @@ impl BroadPhase {
 
     #[cfg(test)]
     fn partition_tiny_scenes(&mut self) {
-        if let Inner::Grid(g) = &mut self.inner {
-            g.partition_tiny_scenes();
+        match &mut self.inner {
+            Inner::SweepAndPrune(s) => s.partition_tiny_scenes(),
+            Inner::Grid(g) => g.partition_tiny_scenes(),
         }
     }
 
@@ -497,18 +500,20 @@ mod tests {
         v
     }
 
-    /// Every concrete configuration: sweep and prune, the grid on 1 thread, the grid on 2 and 3
-    /// threads with its partitions forced even at tiny N.
+    /// Every concrete configuration: sweep and prune and the grid on 1 thread, and each on 2 and
+    /// 3 threads with its partitions forced even at tiny N.
     fn every_configuration(half: f64, lo: Vec3, side: f64, n: usize) -> Vec<BroadPhase> {
         let mut out = vec![
             BroadPhase::with_kind(BroadPhaseKind::SweepAndPrune, half, lo, side, n),
             BroadPhase::with_kind(BroadPhaseKind::Grid, half, lo, side, n),
         ];
-        for threads in [2, 3] {
-            let mut bp = BroadPhase::with_kind(BroadPhaseKind::Grid, half, lo, side, n);
-            bp.set_threads(threads);
-            bp.partition_tiny_scenes();
-            out.push(bp);
+        for kind in [BroadPhaseKind::SweepAndPrune, BroadPhaseKind::Grid] {
+            for threads in [2, 3] {
+                let mut bp = BroadPhase::with_kind(kind, half, lo, side, n);
+                bp.set_threads(threads);
+                bp.partition_tiny_scenes();
+                out.push(bp);
+            }
         }
         out
     }
@@ -532,14 +537,22 @@ mod tests {
                 let positions: Vec<Vec3> = w.position.iter().map(|&p| p + offset).collect();
                 let check = f % 30 == 0 || f == frames;
                 let expected = if check { brute_force_pairs(&positions, half) } else { Vec::new() };
-                let mut grid_order: Option<Vec<(u32, u32)>> = None;
+                // Per kind, the first configuration's pairs and index.
+                type Output = (Vec<(u32, u32)>, Option<Columns>);
+                let mut first_of: [Option<Output>; 2] = [None, None];
                 for bp in &mut bps {
                     let got = bp.update(&positions).to_vec();
-                    if bp.kind() == BroadPhaseKind::Grid {
-                        // Any thread count gives the 1-thread output, in the same order.
-                        match &grid_order {
-                            Some(first) => prop_assert_eq!(first, &got),
-                            None => grid_order = Some(got.clone()),
+                    // Any thread count gives the 1-thread output, in the same order, and the
+                    // same index.
+                    let index = bp.columns().cloned();
+                    match &first_of[usize::from(bp.kind() == BroadPhaseKind::Grid)] {
+                        Some((pairs, cols)) => {
+                            prop_assert_eq!(pairs, &got);
+                            prop_assert_eq!(cols, &index);
+                        }
+                        None => {
+                            first_of[usize::from(bp.kind() == BroadPhaseKind::Grid)] =
+                                Some((got.clone(), index));
                         }
                     }
                     if check {
