@@ -21,7 +21,7 @@ use tokio::time::Instant;
 use crate::ClientError;
 
 /// Columns of the frame CSV, in order.
-pub const CSV_COLUMNS: [&str; 25] = [
+pub const CSV_COLUMNS: [&str; 29] = [
     "index",
     "sim_time_s",
     "fixation_x",
@@ -47,13 +47,18 @@ pub const CSV_COLUMNS: [&str; 25] = [
     "bodies",
     "resolved_per_level",
     "received_at_s",
+    "metrics_stride",
+    "delta_se",
+    "p_se",
+    "budget_spent_before_narrow",
 ];
 
 /// The header line of the frame CSV (no terminator).
 pub const CSV_HEADER: &str = "index,sim_time_s,fixation_x,fixation_y,fixation_age_s,\
 fixation_source,collision_time_s,delta,p,candidate_pairs,real_collisions,deemed,sphere_tests,\
 dropped_before,true_false_positives,true_delta,true_p,budget_exhausted,integrate_s,broad_s,\
-narrow_s,response_s,bodies,resolved_per_level,received_at_s";
+narrow_s,response_s,bodies,resolved_per_level,received_at_s,metrics_stride,delta_se,p_se,\
+budget_spent_before_narrow";
 
 /// Short name of a fixation source, as written in the CSV and the summary.
 #[must_use]
@@ -92,7 +97,7 @@ pub fn csv_row(frame: &pb::Frame, received_at_s: f64) -> String {
     // Writing to a String cannot fail.
     let _ = write!(
         row,
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
         frame.index,
         frame.sim_time_s,
         fixation.x,
@@ -118,6 +123,11 @@ pub fn csv_row(frame: &pb::Frame, received_at_s: f64) -> String {
         opt(body_count(frame).map(|n| n.to_string())),
         levels,
         received_at_s,
+        // A server before the field existed sends 0: every deemed pair was summed.
+        m.metrics_stride.max(1),
+        m.geometric_inaccuracy_se,
+        m.perceived_inaccuracy_se,
+        u8::from(m.budget_spent_before_narrow),
     );
     row
 }
@@ -395,6 +405,7 @@ mod tests {
                 sphere_tests: 99,
                 budget_exhausted: true,
                 audit: None,
+                ..Default::default()
             }),
             profile: Some(pb::PhaseProfile::default()),
             dropped_before: dropped,
@@ -425,6 +436,12 @@ mod tests {
         assert_eq!(col("budget_exhausted"), "1");
         assert_eq!(col("resolved_per_level"), "4;2;1");
         assert_eq!(col("bodies"), "");
+        assert_eq!(
+            col("metrics_stride"),
+            "1",
+            "0 from an older server reads as 1"
+        );
+        assert_eq!(col("budget_spent_before_narrow"), "0");
         let mut audited = frame(8, 0.0, 0);
         if let Some(m) = audited.metrics.as_mut() {
             m.audit = Some(pb::AuditMetrics {

@@ -534,6 +534,10 @@ pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &pb::Fixation) -> pb::
             resolved_per_level: r.resolved_per_level.iter().map(|&n| u64::from(n)).collect(),
             sphere_tests: r.sphere_tests,
             budget_exhausted: r.budget_exhausted,
+            metrics_stride: r.metrics_stride,
+            geometric_inaccuracy_se: r.geometric_inaccuracy_se,
+            perceived_inaccuracy_se: r.perceived_inaccuracy_se.unwrap_or(0.0),
+            budget_spent_before_narrow: r.budget_spent_before_narrow,
             audit: r.audit.map(|a| pb::AuditMetrics {
                 true_false_positives: u64::from(a.false_positives),
                 true_geometric_inaccuracy: a.geometric_inaccuracy,

@@ -18,6 +18,8 @@ pub struct Summary {
     p_sum: f64,
     pairs_sum: u64,
     deemed_sum: u64,
+    /// Integration and broad-phase time of the frames whose wall-clock budget they spent.
+    starved_fixed_ns: Vec<u64>,
     overruns_at_start: u64,
     gaze_at_start: u64,
 }
@@ -44,6 +46,7 @@ impl Summary {
             p_sum: 0.0,
             pairs_sum: 0,
             deemed_sum: 0,
+            starved_fixed_ns: Vec::new(),
             overruns_at_start: metrics.overruns(),
             gaze_at_start: metrics.gaze_accepted(),
         }
@@ -58,6 +61,11 @@ impl Summary {
         self.p_sum += r.perceived_inaccuracy.unwrap_or(0.0);
         self.pairs_sum += u64::from(r.candidate_pairs);
         self.deemed_sum += u64::from(r.deemed);
+        if r.budget_spent_before_narrow {
+            let p = &r.profile;
+            self.starved_fixed_ns
+                .push(p.renumber_ns + p.integrate_ns + p.broad_ns);
+        }
     }
 
     /// If the window is over at `now`, log it, publish its rates and start the next one.
@@ -90,7 +98,28 @@ impl Summary {
             gaze_hz = format_args!("{gaze_rate:.0}"),
             "frames"
         );
+        if let Some(warning) = self.starved_warning(frames) {
+            tracing::warn!(target: "foveal::summary", "{warning}");
+        }
         *self = Self::new(self.interval, now, metrics);
+    }
+
+    /// What to tell the operator when, in at least half the window's frames, the wall-clock
+    /// budget was spent before the narrow phase: a budget that silently deems every pair is a
+    /// configuration error, not a trade-off.
+    fn starved_warning(&mut self, frames: usize) -> Option<String> {
+        let starved = self.starved_fixed_ns.len();
+        if frames == 0 || 2 * starved < frames {
+            return None;
+        }
+        self.starved_fixed_ns.sort_unstable();
+        let fixed = ms(quantile(&self.starved_fixed_ns, 0.5));
+        Some(format!(
+            "the wall-clock budget was spent before the narrow phase in {starved} of {frames} \
+             frames: integration and the broad phase alone take {fixed:.3} ms (median) at this \
+             body count, so every pair was deemed colliding; raise --budget well above \
+             {fixed:.3} ms, lower --bodies, or use a sphere-test budget (e.g. 20000tests)"
+        ))
     }
 }
 
@@ -105,6 +134,46 @@ mod tests {
         assert_eq!(quantile(&v, 0.99), 99);
         assert_eq!(quantile(&v, 1.0), 100);
         assert_eq!(quantile(&[], 0.5), 0);
+    }
+
+    /// A window in which the budget was spent before the narrow phase in most frames says so,
+    /// with the fixed work's median; a window where it happened in a minority of frames does not.
+    #[test]
+    fn a_budget_spent_before_the_narrow_phase_is_reported() {
+        let m = Metrics::default();
+        let t0 = Instant::now();
+        let mut s = Summary::new(Duration::from_secs(1), t0, &m);
+        let starved = FrameReport {
+            budget_spent_before_narrow: true,
+            profile: foveal_engine::PhaseProfile {
+                integrate_ns: 300_000,
+                broad_ns: 1_200_000,
+                ..Default::default()
+            },
+            ..FrameReport::default()
+        };
+        for k in 0..10 {
+            let r = if k < 6 {
+                &starved
+            } else {
+                &FrameReport::default()
+            };
+            s.record(r, Duration::from_millis(2));
+        }
+        let warning = s.starved_warning(10).expect("6 of 10 frames starved");
+        assert!(warning.contains("6 of 10 frames"), "{warning}");
+        assert!(warning.contains("1.500 ms"), "{warning}");
+        assert!(warning.contains("--budget"), "{warning}");
+        let mut s = Summary::new(Duration::from_secs(1), t0, &m);
+        for k in 0..10 {
+            let r = if k < 4 {
+                &starved
+            } else {
+                &FrameReport::default()
+            };
+            s.record(r, Duration::from_millis(2));
+        }
+        assert_eq!(s.starved_warning(10), None);
     }
 
     #[test]

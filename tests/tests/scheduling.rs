@@ -109,30 +109,55 @@ async fn tight_budget_is_spent_near_the_fixation() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn wall_clock_budget_holds() {
-    const BUDGET_MS: f64 = 1.0;
+    // Integration and the broad phase take about 0.6 ms here in the test build (opt-level 1) and
+    // response and metrics about 0.4 ms: 2 ms leaves the narrow phase time, and binds.
+    const BUDGET_MS: f64 = 2.0;
     let mut config = small_config(3000, 30.0);
     config.sim.budget = BudgetSpec::WallMs(BUDGET_MS);
     let server = TestServer::start(config).await;
     let mut client = server.client().await;
     let mut frames = watch(&mut client, 1, false).await;
     let mut over = Vec::new();
-    let mut exhausted = 0;
+    let (mut exhausted, mut sampled) = (0, 0);
     const FRAMES: usize = 30;
     for _ in 0..FRAMES {
         let f = next_frame(&mut frames).await;
         let prof = f.profile.expect("profile");
         let m = f.metrics.expect("metrics");
         exhausted += usize::from(m.budget_exhausted);
-        // The deadline counts from the start of the frame and covers integration, the broad
-        // phase, prioritisation and the narrow phase (response and metrics follow it).
+        // Δ and P say how they were summed: every deemed pair (stride 1), or a sample that fitted
+        // the budget, with its standard error.
+        assert!(m.metrics_stride >= 1, "stride {}", m.metrics_stride);
+        if m.metrics_stride > 1 {
+            sampled += 1;
+            assert!(m.perceived_inaccuracy_se > 0.0 && m.geometric_inaccuracy_se > 0.0);
+        } else {
+            assert_eq!(
+                (m.perceived_inaccuracy_se, m.geometric_inaccuracy_se),
+                (0.0, 0.0)
+            );
+        }
+        assert!(
+            !m.budget_spent_before_narrow,
+            "{BUDGET_MS} ms covers this scene's fixed work"
+        );
+        // The deadline counts from the start of the frame and covers every phase: integration,
+        // the broad phase, prioritisation, the narrow phase, response and metrics.
         over.push(
-            (prof.integrate_s + prof.broad_s + prof.prioritise_s + prof.narrow_s) * 1e3 - BUDGET_MS,
+            (prof.integrate_s
+                + prof.broad_s
+                + prof.prioritise_s
+                + prof.narrow_s
+                + prof.response_s
+                + prof.measure_s)
+                * 1e3
+                - BUDGET_MS,
         );
     }
     over.sort_by(f64::total_cmp);
     let median_over_ms = over[FRAMES / 2];
     println!(
-        "budget {BUDGET_MS} ms: median overshoot {median_over_ms:.3} ms, exhausted in {exhausted}/{FRAMES} frames"
+        "budget {BUDGET_MS} ms: median overshoot {median_over_ms:.3} ms, exhausted in {exhausted}/{FRAMES} frames, Δ and P sampled in {sampled}"
     );
     assert!(exhausted > 0, "the budget must bind at this N");
     // Generous: the machine running the suite is shared; the overshoot is a few µs unloaded.

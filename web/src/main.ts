@@ -306,6 +306,11 @@ function text(id: string, s: string): void {
   el(id).textContent = s;
 }
 
+/** " ± se (1 in k)" for a figure summed over a sample of the deemed pairs, "" when exact. */
+function sampled(stride: number, se: number): string {
+  return stride > 1 ? ` ± ${se.toFixed(3)} (1 in ${stride})` : "";
+}
+
 function drawReadout(): void {
   const f = lastFrame, m = f?.metrics, fix = f?.fixation;
   const src = fix ? ({ [FixationSource.GAZE]: "gaze", [FixationSource.FALLBACK_NO_GAZE]: "no gaze: centre", [FixationSource.FALLBACK_STALE]: "stale: centre" } as Record<number, string>)[fix.source] ?? "?" : "-";
@@ -316,7 +321,10 @@ function drawReadout(): void {
           `frame ${f?.index}  bodies ${stats.bodies}  ${arrivals.length} fps`,
           `pairs ${m.candidatePairs}  real ${m.realCollisions}  deemed ${m.deemedAtInterruption}`,
           `T ${(1000 * m.collisionTimeS).toFixed(2)} ms  tests ${m.sphereTests}${m.budgetExhausted ? " (budget ran out)" : ""}`,
-          `Δ ${m.geometricInaccuracy.toFixed(3)}  P ${m.perceivedInaccuracy.toFixed(3)}${m.audit ? `  true P ${m.audit.truePerceivedInaccuracy.toFixed(3)}  false positives ${m.audit.trueFalsePositives}` : ""}`,
+          ...(m.budgetSpentBeforeNarrow
+            ? ["the budget was spent before the narrow phase: every pair deemed (raise the budget)"]
+            : []),
+          `Δ ${m.geometricInaccuracy.toFixed(3)}${sampled(m.metricsStride, m.geometricInaccuracySe)}  P ${m.perceivedInaccuracy.toFixed(3)}${sampled(m.metricsStride, m.perceivedInaccuracySe)}${m.audit ? `  true P ${m.audit.truePerceivedInaccuracy.toFixed(3)}  false positives ${m.audit.trueFalsePositives}` : ""}`,
           `fixation (${fix?.x.toFixed(3)}, ${fix?.y.toFixed(3)}) ${src}`,
           `decode+update ${median(stats.updateMs).toFixed(2)} ms  parse ${median(stats.parseMs).toFixed(2)} ms  ${(stats.frameBytes / 1024).toFixed(0)} KiB/frame`,
           `gaze sent ${gaze.accepted}${gaze.lastError ? `  (${gaze.lastError})` : ""}`,

@@ -62,7 +62,11 @@ pub struct AuditReport {
 pub const FOVEAL_DEG: f64 = 5.0;
 
 /// One frame's record.
+///
+/// A field missing from a serialized record (one written before the field existed) takes its
+/// default, so recordings stay readable as flags are added.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct FrameReport {
     /// Frame number, from 0.
     pub index: u64,
@@ -111,6 +115,11 @@ pub struct FrameReport {
     /// Of the frames whose ordering was shed, those scheduled round-robin nearest the fixation
     /// first (see `schedule::rings`).
     pub gaze_rings: bool,
+    /// The wall-clock budget was spent before the narrow phase could start: integration and the
+    /// broad phase (with the learnt tail kept for response and metrics) took all of it, so no
+    /// pair was tested and every pair was deemed. The budget is below what this scene's fixed
+    /// per-frame work costs on this machine.
+    pub budget_spent_before_narrow: bool,
     /// Broad-phase regions a whole-frame wall-clock budget did not reach (see `shedding`): their
     /// pairs were not searched, collided or responded to this frame. 0 under other budgets.
     pub stale_regions: u32,
@@ -189,5 +198,29 @@ impl Fnv1a {
     /// Mix in the bits of a float.
     pub fn f64(&mut self, v: f64) {
         self.u64(v.to_bits());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A record written before the newer flags existed still reads, with them unset.
+    #[test]
+    fn a_record_without_the_newer_flags_reads_with_them_unset() {
+        let mut json = serde_json::to_value(FrameReport {
+            index: 7,
+            deemed: 3,
+            gaze_rings: true,
+            budget_spent_before_narrow: true,
+            ..FrameReport::default()
+        })
+        .expect("serialize");
+        let map = json.as_object_mut().expect("an object");
+        map.remove("gaze_rings");
+        map.remove("budget_spent_before_narrow");
+        let r: FrameReport = serde_json::from_value(json).expect("an older record reads");
+        assert_eq!((r.index, r.deemed), (7, 3));
+        assert!(!r.gaze_rings && !r.budget_spent_before_narrow);
     }
 }

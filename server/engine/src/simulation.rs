@@ -302,6 +302,7 @@ impl Simulation {
             Some((end, _)) => FrameBudget::Deadline(self.shedder.narrow_deadline(end, pairs)),
             None => budget,
         };
+        r.budget_spent_before_narrow = matches!(narrow_budget, FrameBudget::Deadline(d) if t2 >= d);
         let input = FrameInput {
             tree: &self.tree,
             world: &self.world,
@@ -493,12 +494,31 @@ mod tests {
             let r = sim.step(fixation, &clock);
             let spent = clock.0.get() - start;
             assert!(r.budget_exhausted && r.deemed > 0, "frame {frame}: not cut");
+            assert!(!r.budget_spent_before_narrow);
             if frame >= 2 {
                 assert!(
                     spent <= budget_ns + tick,
                     "frame {frame} took {spent} ns of a {budget_ns} ns budget"
                 );
             }
+        }
+    }
+
+    /// A wall-clock budget that integration and the broad phase spend whole is reported as such
+    /// (the server warns about it): no sphere test, every pair deemed.
+    #[test]
+    fn a_budget_the_fixed_work_spends_is_reported() {
+        let mut sim = Simulation::new(SimConfig {
+            scene: SceneConfig::paper(500, 3),
+            budget: BudgetSpec::WallMs(0.008),
+            ..SimConfig::default()
+        })
+        .expect("valid");
+        let clock = crate::budget::Ticking(std::cell::Cell::new(0), 5_000);
+        for _ in 0..3 {
+            let r = sim.step(Some(Fixation::at(0.5, 0.5)), &clock);
+            assert!(r.budget_spent_before_narrow);
+            assert_eq!((r.sphere_tests, r.deemed), (0, r.candidate_pairs));
         }
     }
 

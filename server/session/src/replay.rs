@@ -153,6 +153,7 @@ pub fn compare(recorded: &FrameRecord, replayed: &FrameReport, exact: bool) -> O
             budget_exhausted,
             ordering_shed,
             gaze_rings,
+            budget_spent_before_narrow,
             audit,
         );
     }
