@@ -361,8 +361,12 @@ impl Simulation {
         profile.measure_ns = t5 - t4;
         if deadline.is_some() {
             // The tail: from where the narrow phase had to stop (or stopped) to the frame's end.
+            // A frame whose broad phase ran past that point starts its tail where the narrow
+            // phase started: counting the overrun as tail would move the next frame's narrow
+            // deadline earlier still, and a budget near the fixed work would lock into deeming
+            // every pair.
             let narrow_end = match narrow_budget {
-                FrameBudget::Deadline(d) if r.budget_exhausted => d,
+                FrameBudget::Deadline(d) if r.budget_exhausted => d.max(t2),
                 _ => t2 + profile.prioritise_ns + profile.narrow_ns,
             };
             self.shedder
