@@ -55,8 +55,10 @@ pub struct Cli {
     /// (docs/BENCHMARKS.md).
     #[arg(long, env = "FOVEAL_SCHEDULER", default_value = "priced", value_parser = parse_scheduler)]
     pub scheduler: SchedulerKind,
-    /// Worker threads for the frame's phases (1..=64); results do not depend on it.
-    #[arg(long, env = "FOVEAL_THREADS", default_value_t = 1)]
+    /// Worker threads for the frame's phases (1..=64; default: the machine's cores, at most 64).
+    /// Under sphere-test and exact budgets the reports do not depend on it; under a wall-clock
+    /// budget more threads settle more pairs in the same time.
+    #[arg(long, env = "FOVEAL_THREADS", default_value_t = default_threads())]
     pub threads: u32,
     /// Broad phase: `auto` (sweep and prune at small N, a uniform grid at large N),
     /// `sweep-and-prune` or `grid`.
@@ -183,6 +185,12 @@ fn parse_broad_phase(s: &str) -> Result<BroadPhaseKind, String> {
         let names: Vec<_> = BroadPhaseKind::ALL.iter().map(|k| k.name()).collect();
         format!("unknown broad phase `{s}`; one of: {}", names.join(", "))
     })
+}
+
+/// The `--threads` default: every core the process may use (each phase splits its work only
+/// where it is large enough to pay for a thread), at most the 64 the engine accepts.
+fn default_threads() -> u32 {
+    std::thread::available_parallelism().map_or(1, |n| n.get().min(64) as u32)
 }
 
 fn parse_scheduler(s: &str) -> Result<SchedulerKind, String> {
@@ -450,6 +458,9 @@ mod tests {
         let mut expected = SimConfig::default();
         expected.scene.bodies = DEFAULT_BODIES;
         expected.budget = BudgetSpec::SphereTests(8000);
+        // Every core the process may use, at most 64.
+        expected.threads = default_threads();
+        assert!((1..=64).contains(&expected.threads));
         assert_eq!(c.sim, expected);
         assert_eq!(c.gaze_max_age, Duration::from_millis(500));
         let sec = cli.security().expect("no tokens, no TLS");
