@@ -161,6 +161,10 @@ async fn wall_clock_budget_holds() {
     );
     assert!(exhausted > 0, "the budget must bind at this N");
     // Generous: the machine running the suite is shared; the overshoot is a few µs unloaded.
-    assert!(median_over_ms < 1.0, "median overshoot {median_over_ms} ms");
+    // Tight enough to fail if response and metrics (about 0.4 ms here) ran past the deadline.
+    assert!(
+        median_over_ms < 0.25,
+        "median overshoot {median_over_ms} ms"
+    );
     server.stop().await.expect("clean stop");
 }

@@ -136,7 +136,12 @@ function onFrame(f: Frame): void {
     const budget = scene?.config?.budget?.kind;
     let use: number | null = null;
     if (budget?.case === "sphereTests" && budget.value > 0n) use = Number(m.sphereTests) / Number(budget.value);
-    else if (budget?.case === "wallMs" && budget.value > 0) use = (1000 * m.collisionTimeS) / budget.value;
+    else if (budget?.case === "wallMs" && budget.value > 0) {
+      // A wall-clock budget covers the whole frame, integration to metrics.
+      const p = f.profile;
+      const stepS = p ? p.renumberS + p.integrateS + p.broadS + p.prioritiseS + p.narrowS + p.responseS + p.measureS : m.collisionTimeS;
+      use = (1000 * stepS) / budget.value;
+    }
     else if (budget?.case === "exact") use = 0;
     const candidates = Number(m.candidatePairs);
     plots.push({

@@ -478,7 +478,8 @@ impl Collider {
         self.measure_within(input, fixation, metrics::Effort::default(), r);
     }
 
-    /// [`Self::measure`] within an [`metrics::Effort`] (a whole-frame budget's metrics).
+    /// [`Self::measure`] within an [`metrics::Effort`] (a whole-frame budget's metrics), and the
+    /// audit when it is on.
     pub fn measure_within(
         &mut self,
         input: &FrameInput<'_>,
@@ -486,17 +487,59 @@ impl Collider {
         effort: metrics::Effort,
         r: &mut FrameReport,
     ) {
-        let fixation_px = fixation.map(|f| {
+        self.measure_metrics(input, fixation, effort, r);
+        self.audit_frame(input, fixation, r);
+    }
+
+    /// How P is measured this frame: about the fixation itself, however uncertain it was.
+    fn measure_view<'a>(
+        &self,
+        input: &FrameInput<'a>,
+        fixation: Option<Fixation>,
+    ) -> Option<FrameView<'a>> {
+        fixation.map(|f| {
             let f = f.clamped();
-            input.viewer.to_pixels(f.x, f.y)
-        });
-        let view = fixation_px.map(|px| FrameView {
-            viewer: input.viewer,
-            fixation_px: px,
-            model: self.config.measure_model,
-            // P is measured about the fixation itself, however uncertain it was.
-            uncertainty_deg: 0.0,
-        });
+            FrameView {
+                viewer: input.viewer,
+                fixation_px: input.viewer.to_pixels(f.x, f.y),
+                model: self.config.measure_model,
+                uncertainty_deg: 0.0,
+            }
+        })
+    }
+
+    /// The audit (the exact answer for every deemed pair), when the config asks for it: a
+    /// diagnostic whose cost grows with the deemed pairs, so a whole-frame budget does not learn
+    /// it as part of the frame's tail (see `Simulation::step`).
+    pub fn audit_frame(
+        &mut self,
+        input: &FrameInput<'_>,
+        fixation: Option<Fixation>,
+        r: &mut FrameReport,
+    ) {
+        if !self.config.audit {
+            return;
+        }
+        let view = self.measure_view(input, fixation);
+        r.audit = Some(audit(
+            &self.narrow,
+            input.tree,
+            input.world,
+            view.as_ref(),
+            &mut self.audit_stack,
+        ));
+    }
+
+    /// The metrics of [`Self::measure_within`] without the audit.
+    pub fn measure_metrics(
+        &mut self,
+        input: &FrameInput<'_>,
+        fixation: Option<Fixation>,
+        effort: metrics::Effort,
+        r: &mut FrameReport,
+    ) {
+        let view = self.measure_view(input, fixation);
+        let fixation_px = view.as_ref().map(|v| v.fixation_px);
         let (tree, world) = (input.tree, input.world);
         let fovea = fixation_px.map(|px| Fovea::new(input.viewer, px, FOVEAL_DEG));
         let m = metrics::measure_within(
@@ -517,15 +560,6 @@ impl Collider {
         r.perceived_inaccuracy_se = view.map(|_| m.p_se);
         r.foveal_pairs = m.foveal;
         r.foveal_deemed = m.foveal_deemed;
-        if self.config.audit {
-            r.audit = Some(audit(
-                &self.narrow,
-                tree,
-                world,
-                view.as_ref(),
-                &mut self.audit_stack,
-            ));
-        }
     }
 
     /// One open-loop frame: collide and measure `input` under `budget`, as a report (integration,

@@ -132,7 +132,8 @@ pub enum BudgetSpec {
     Exact,
     /// Interrupt before the first sphere test: every candidate pair is deemed colliding.
     InterruptAtZero,
-    /// Wall-clock budget for the narrow phase, in milliseconds, measured by the caller's clock.
+    /// Wall-clock budget for the whole frame (integration to metrics; the audit, when on, runs
+    /// after it), in milliseconds, measured by the caller's clock.
     WallMs(f64),
     /// Deterministic budget: at most this many sphere tests per frame.
     SphereTests(u64),

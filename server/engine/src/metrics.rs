@@ -4,7 +4,8 @@
 //! Δ and P need each deemed pair's evidence (a projection and two visual angles for P), about a
 //! hundred nanoseconds a pair; at a million bodies under a tight budget over a million pairs are
 //! deemed, and summing them all would cost more than the frame. So:
-//! - up to [`EXACT_LIMIT`] deemed pairs, every one is summed (exact);
+//! - up to [`EXACT_LIMIT`] deemed pairs (or, under a wall-clock budget, as many as a share of the
+//!   budget pays for: [`Effort`], sized in `shedding`), every one is summed (exact);
 //! - beyond it, a systematic sample is summed: the deemed pairs whose index is a multiple of the
 //!   stride k, scaled by k, with its standard error (Bernoulli sampling at rate 1/k:
 //!   se^2 = (1 - 1/k) k^2 sum of the sampled x^2). The report says the stride and both errors.

@@ -910,7 +910,8 @@ export type Budget = Message<"foveal.v1.Budget"> & {
     case: "interruptAtZero";
   } | {
     /**
-     * Wall-clock budget for the narrow phase, milliseconds.
+     * Wall-clock budget for the whole frame (integration, broad phase, prioritisation, narrow
+     * phase, response and metrics; the audit, when on, runs after it), milliseconds.
      *
      * @generated from field: double wall_ms = 3;
      */
@@ -1242,7 +1243,7 @@ export type SceneConfig = Message<"foveal.v1.SceneConfig"> & {
   eccentricityThresholdDeg: number;
 
   /**
-   * Per-frame narrow-phase budget.
+   * Per-frame budget: a wall-clock budget covers the whole frame, the others the narrow phase.
    *
    * @generated from field: foveal.v1.Budget budget = 12;
    */
