@@ -213,13 +213,7 @@ impl Simulation {
 
     /// This frame's poses and candidates, for a collider.
     pub fn frame_input(&self) -> FrameInput<'_> {
-        FrameInput {
-            tree: &self.tree,
-            world: &self.world,
-            candidates: self.broad.pairs(),
-            columns: self.broad.columns(),
-            viewer: &self.viewer,
-        }
+        frame_input(&self.tree, &self.world, &self.broad, &self.viewer)
     }
 
     /// Run one frame. `fixation` is where the viewer looks (None, or non-finite, means unknown:
@@ -304,13 +298,7 @@ impl Simulation {
             None => budget,
         };
         r.budget_spent_before_narrow = matches!(narrow_budget, FrameBudget::Deadline(d) if t2 >= d);
-        let input = FrameInput {
-            tree: &self.tree,
-            world: &self.world,
-            candidates: self.broad.pairs(),
-            columns: self.broad.columns(),
-            viewer: &self.viewer,
-        };
+        let input = frame_input(&self.tree, &self.world, &self.broad, &self.viewer);
         let foveal_prefix = shedding.map(|_| {
             let foveal = self.shedder.foveal_regions().min(searched);
             self.broad.region_pairs_before(foveal)
@@ -332,13 +320,7 @@ impl Simulation {
         self.next_index += 1;
         self.sim_time += self.config.scene.dt;
         r.sim_time = self.sim_time;
-        let input = FrameInput {
-            tree: &self.tree,
-            world: &self.world,
-            candidates: self.broad.pairs(),
-            columns: self.broad.columns(),
-            viewer: &self.viewer,
-        };
+        let input = frame_input(&self.tree, &self.world, &self.broad, &self.viewer);
         // Pairs are listed region by region in the searched order; only the first regions can
         // hold foveal pairs.
         // Under a wall-clock budget Δ and P are summed over a sample sized to the budget where
@@ -395,13 +377,7 @@ impl Simulation {
     pub fn measure_exactly(&mut self) -> &FrameReport {
         if self.report.metrics_stride > 1 {
             let mut r = self.report.clone();
-            let input = FrameInput {
-                tree: &self.tree,
-                world: &self.world,
-                candidates: self.broad.pairs(),
-                columns: self.broad.columns(),
-                viewer: &self.viewer,
-            };
+            let input = frame_input(&self.tree, &self.world, &self.broad, &self.viewer);
             let every_pair = crate::metrics::Effort {
                 sample_limit: u32::MAX,
                 ..crate::metrics::Effort::default()
@@ -442,6 +418,23 @@ impl Simulation {
             }
         }
         out
+    }
+}
+
+/// A collider's view of a frame, from the simulation's parts (so that the collider itself can be
+/// borrowed mutably beside it).
+fn frame_input<'a>(
+    tree: &'a SphereTree,
+    world: &'a World,
+    broad: &'a BroadPhase,
+    viewer: &'a Viewer,
+) -> FrameInput<'a> {
+    FrameInput {
+        tree,
+        world,
+        candidates: broad.pairs(),
+        columns: broad.columns(),
+        viewer,
     }
 }
 
@@ -556,13 +549,7 @@ mod tests {
             }
             sampled += 1;
             let mut want = est.clone();
-            let input = FrameInput {
-                tree: &sim.tree,
-                world: &sim.world,
-                candidates: sim.broad.pairs(),
-                columns: sim.broad.columns(),
-                viewer: &sim.viewer,
-            };
+            let input = frame_input(&sim.tree, &sim.world, &sim.broad, &sim.viewer);
             sim.collider.measure(&input, est.fixation, &mut want);
             let got = sim.measure_exactly().clone();
             assert_eq!(got.metrics_stride, 1);

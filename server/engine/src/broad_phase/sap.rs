@@ -50,7 +50,7 @@ pub(super) struct SweepAndPrune {
     moved: Vec<u32>,
     pairs: PairBuffer,
     /// Output of sweep parts 1.. when running on several threads.
-    partition_pairs: Vec<Vec<(u32, u32)>>,
+    partition_pairs: Vec<PairBuffer>,
     threads: usize,
     /// Fewer bodies than this per thread and fewer threads are used (tests lower it).
     min_bodies_per_thread: usize,
@@ -227,7 +227,7 @@ impl SweepAndPrune {
             jobs.push((c0..c1, s_here, x_here, r_here));
         }
         self.partition_pairs
-            .resize_with(parts.saturating_sub(1), Vec::new);
+            .resize_with(parts.saturating_sub(1), PairBuffer::default);
         let columns = &self.columns;
         let sweep_part = |(range, start, xs, runs): Job<'_>, buf: &mut Vec<(u32, u32)>| {
             let mut sink = PairSink { buf, len: 0 };
@@ -245,12 +245,13 @@ impl SweepAndPrune {
             std::thread::scope(|s| {
                 let sweep_part = &sweep_part;
                 for ((job, buf), len) in jobs.zip(&mut self.partition_pairs).zip(tail.iter_mut()) {
-                    s.spawn(move || *len = sweep_part(job, buf));
+                    s.spawn(move || *len = sweep_part(job, buf.storage()));
                 }
                 head[0] = sweep_part(first, main);
             });
         }
         // Concatenate, moving each later part's offsets by the pairs before it.
+        self.pairs.set_len(lens[0]);
         let mut len = lens[0];
         for (k, w) in rows.windows(2).enumerate().skip(1) {
             let base = len as u32;
@@ -263,22 +264,13 @@ impl SweepAndPrune {
             for r in &mut index.runs[r0..r1] {
                 *r += base;
             }
-            let part = &self.partition_pairs[k - 1][..lens[k]];
-            let buf = self.pairs.storage();
-            if buf.len() < len + part.len() {
-                buf.resize(len + part.len(), (0, 0));
-            }
-            buf[len..len + part.len()].copy_from_slice(part);
-            len += part.len();
+            let part = &mut self.partition_pairs[k - 1];
+            part.finish(lens[k]);
+            self.pairs.append(part.as_slice());
+            len += lens[k];
         }
         index.start[cols] = len as u32;
-        self.pairs.finish(len);
-        for (buf, &l) in self.partition_pairs.iter_mut().zip(&lens[1..]) {
-            if buf.capacity() > 4 * l + super::PAIR_SLACK {
-                buf.truncate(2 * l + super::PAIR_SLACK);
-                buf.shrink_to_fit();
-            }
-        }
+        self.pairs.end_frame();
     }
 
     /// Panic unless every body is in exactly the column its position maps to and every column is
