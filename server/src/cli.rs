@@ -92,6 +92,12 @@ pub struct Cli {
     /// Compute the exact answer for every deemed pair (true false positives, true Δ and P).
     #[arg(long, env = "FOVEAL_AUDIT")]
     pub audit: bool,
+    /// Under a wall-clock budget, settle every pair within 5 degrees of the fixation before any
+    /// other (priced scheduler): what the viewer looks at is exact, at the price of perceived
+    /// error elsewhere (at N = 10,000 and 4 ms, frames with every foveal pair settled go from
+    /// 1-2% to 99.5-100%; docs/BENCHMARKS.md).
+    #[arg(long, env = "FOVEAL_FOVEA_FIRST")]
+    pub fovea_first: bool,
     /// Display width in pixels.
     #[arg(long, env = "FOVEAL_DISPLAY_WIDTH_PX", default_value_t = 1680)]
     pub display_width_px: u32,
@@ -297,6 +303,7 @@ impl Cli {
         sim.schedule_model = self.schedule_model.0;
         sim.measure_model = self.measure_model.0;
         sim.audit = self.audit;
+        sim.fovea_first = self.fovea_first;
         sim.display.width_px = self.display_width_px;
         sim.display.height_px = self.display_height_px;
         sim.display.diagonal_in = self.display_diagonal_in;

@@ -66,6 +66,10 @@ struct OpenLoopArgs {
     /// this is above 1; the default is 1.
     #[arg(long, default_value_t = 1)]
     jobs: usize,
+    /// Settle every pair within 5 degrees of the fixation first in the priced scheduler's
+    /// wall-clock frames (`SimConfig::fovea_first`).
+    #[arg(long)]
+    fovea_first: bool,
     /// Output directory.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -103,6 +107,7 @@ fn open_loop(args: &OpenLoopArgs) -> Result<()> {
         cfg.out = o.clone();
     }
     cfg.jobs = args.jobs.max(1);
+    cfg.fovea_first = args.fovea_first;
     let out = ol::run_and_write(&cfg).context("open-loop comparison failed")?;
     for f in &out.files {
         eprintln!("{}", f.display());
@@ -454,6 +459,10 @@ struct ScaleArgs {
     /// settles the pairs near the fixation first).
     #[arg(long, default_value = "priced", value_parser = parse_scheduler)]
     scheduler: SchedulerKind,
+    /// Settle every pair within 5 degrees of the fixation first in budgeted runs
+    /// (`SimConfig::fovea_first`).
+    #[arg(long)]
+    fovea_first: bool,
     /// Output directory (scale.csv, scale.md).
     #[arg(long, default_value = foveal_bench::scale::DEFAULT_OUT)]
     out: PathBuf,
@@ -483,6 +492,7 @@ fn scale(args: &ScaleArgs) -> Result<()> {
         baseline: !args.no_baseline,
         seed: args.seed,
         scheduler: args.scheduler,
+        fovea_first: args.fovea_first,
         out: args.out.clone(),
     };
     let exe = std::env::current_exe().context("locating the foveal-bench binary")?;

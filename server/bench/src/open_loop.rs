@@ -176,6 +176,9 @@ pub struct OpenLoopConfig {
     pub conditions: Vec<Condition>,
     /// Worker threads over (N, seed) runs.
     pub jobs: usize,
+    /// `SimConfig::fovea_first` for every scheduler (only the priced scheduler's wall-clock
+    /// frames take the pass).
+    pub fovea_first: bool,
     /// Output directory.
     pub out: PathBuf,
 }
@@ -314,6 +317,7 @@ impl OpenLoopConfig {
             budgets,
             conditions,
             jobs: 1,
+            fovea_first: false,
             out: PathBuf::from("results/open-loop"),
         }
     }
@@ -433,11 +437,12 @@ pub struct RunResult {
     pub counted: Vec<u32>,
 }
 
-fn sim_config(n: u32, seed: u64) -> SimConfig {
+fn sim_config(n: u32, seed: u64, fovea_first: bool) -> SimConfig {
     SimConfig {
         scene: SceneConfig::paper(n, seed),
         budget: BudgetSpec::Exact,
         scheduler: SchedulerKind::Sequential,
+        fovea_first,
         ..SimConfig::default()
     }
 }
@@ -463,7 +468,8 @@ struct ScheduleRun {
 /// Run one (N, seed) of the paper scene, the scripted viewer looking.
 pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, BenchError> {
     let mut gaze = ScriptedGaze::new(seed);
-    run_frames(cfg, &sim_config(n, seed), seed, &mut |t| gaze.at(t))
+    let scene = sim_config(n, seed, cfg.fovea_first);
+    run_frames(cfg, &scene, seed, &mut |t| gaze.at(t))
 }
 
 /// [`run_one`] for several parts of a protocol at once (see [`run_parts`]).
@@ -473,7 +479,9 @@ fn run_one_parts(
     seed: u64,
 ) -> Result<Vec<RunResult>, BenchError> {
     let mut gaze = ScriptedGaze::new(seed);
-    run_frames_parts(parts, &sim_config(n, seed), seed, &mut |t| gaze.at(t))
+    let fovea_first = parts.first().is_some_and(|p| p.fovea_first);
+    let scene = sim_config(n, seed, fovea_first);
+    run_frames_parts(parts, &scene, seed, &mut |t| gaze.at(t))
 }
 
 /// Run the comparison on the frames of one exact run of `scene` (its budget, scheduler and

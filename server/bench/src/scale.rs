@@ -151,6 +151,9 @@ pub struct RunSpec {
     pub mode: Mode,
     /// The narrow phase's scheduler.
     pub scheduler: SchedulerKind,
+    /// `SimConfig::fovea_first`.
+    #[serde(default)]
+    pub fovea_first: bool,
     /// Scene seed.
     pub seed: u64,
     /// Uncounted frames before the measured ones.
@@ -230,6 +233,8 @@ pub struct ScaleConfig {
     pub seed: u64,
     /// The narrow phase's scheduler in every run (default: the server's).
     pub scheduler: SchedulerKind,
+    /// `SimConfig::fovea_first` in every run.
+    pub fovea_first: bool,
     /// Output directory.
     pub out: PathBuf,
 }
@@ -246,6 +251,7 @@ impl Default for ScaleConfig {
             baseline: true,
             seed: 1,
             scheduler: SimConfig::default().scheduler,
+            fovea_first: false,
             out: PathBuf::from(DEFAULT_OUT),
         }
     }
@@ -344,6 +350,7 @@ impl ScaleConfig {
                     broad_phase,
                     mode,
                     scheduler: self.scheduler,
+                    fovea_first: self.fovea_first,
                     seed: self.seed,
                     warmup,
                     frames,
@@ -367,6 +374,7 @@ fn sim_config(spec: &RunSpec) -> SimConfig {
         scene: SceneConfig::paper(spec.n, spec.seed),
         budget: spec.mode.budget(),
         scheduler: spec.scheduler,
+        fovea_first: spec.fovea_first,
         audit: false,
         threads: spec.threads,
         broad_phase: spec.broad_phase,
@@ -803,7 +811,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "Paper scene (seed {}), scheduler {}, fixation at the screen centre, wall clock. Whole step = \
+        "Paper scene (seed {}), scheduler {}{}, fixation at the screen centre, wall clock. Whole step = \
          `Instant` around `Simulation::step` (p99 nearest rank: the maximum below 100 frames); \
          phase shares = phase totals from `FrameReport.profile` over total step time; foveal exact = \
          frames in which no pair within 5° of the fixation was deemed and every region that may hold \
@@ -813,7 +821,12 @@ pub fn markdown(out: &ScaleOutput) -> String {
          and the sweep-and-prune broad phase (the engine before threads and the grid; its other \
          phases are today's).\n",
         out.results.first().map_or(1, |r| r.spec.seed),
-        out.results.first().map_or("-", |r| r.spec.scheduler.name())
+        out.results.first().map_or("-", |r| r.spec.scheduler.name()),
+        if out.results.first().is_some_and(|r| r.spec.fovea_first) {
+            " (fovea first)"
+        } else {
+            ""
+        }
     );
     let _ = writeln!(
         s,

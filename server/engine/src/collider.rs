@@ -191,6 +191,15 @@ impl Collider {
         })
     }
 
+    /// Whether a frame under `budget` settles the fovea first over every candidate (see
+    /// [`SimConfig::fovea_first`]): wall-clock budgets of the priced scheduler when it uses gaze.
+    fn fovea_first(&self, budget: FrameBudget) -> bool {
+        self.config.fovea_first
+            && matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_))
+            && self.config.scheduler == crate::config::SchedulerKind::Priced
+            && self.config.priced.gaze
+    }
+
     /// Pair states of the last frame.
     pub fn pairs(&self) -> &[PairState] {
         &self.narrow.pairs
@@ -314,20 +323,35 @@ impl Collider {
             return;
         }
         let n = self.narrow.pairs.len();
+        // With `fovea_first`, frames without regions settle the fovea first too, over every
+        // candidate (see `SimConfig::fovea_first`); then the ordering below spends the rest.
+        let whole_fovea = foveal_prefix.is_none() && self.fovea_first(budget);
+        let mut pass_ns = 0;
         if let (Some(prefix), Some(px)) = (
-            foveal_prefix.filter(|_| budget != FrameBudget::Unlimited),
+            foveal_prefix
+                .or(whole_fovea.then_some(n))
+                .filter(|_| budget != FrameBudget::Unlimited),
             fixation_px,
         ) {
             let radius = FOVEAL_DEG + fixation.map_or(0.0, |f| f.clamped().uncertainty_deg);
             let fovea = Fovea::new(input.viewer, px, radius.min(89.0));
             let pos = &input.world.position;
             let pass_start = clock.now_ns();
+            // Over every candidate, a pair is tested only if its first body is near enough to
+            // the fovea for the pair's centre to be in it (one pass over the bodies, as the
+            // metrics' count does): the exact test is a projection.
+            let near = whole_fovea.then(|| {
+                let reach = 3f64.sqrt() * input.tree.root_radius();
+                metrics::near_bodies(&fovea, pos, reach, self.config.threads as usize)
+            });
             // A foveal pair is settled whole, so it is resolved in one go (the same tests as
             // stepping it level by level, without storing and reloading its list at every
             // level), on every thread. The meter is read between pairs, so the pass overshoots
             // its deadline by a few pairs' descents at most (microseconds).
-            let select =
-                |p: &PairState| fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5);
+            let select = |p: &PairState| {
+                near.as_ref().is_none_or(|near| near[p.a as usize])
+                    && fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5)
+            };
             let mut cut = false;
             let settled = self.narrow.resolve_selected(
                 input.tree,
@@ -341,11 +365,17 @@ impl Collider {
                     go
                 },
             );
-            self.foveal_pass = Some((settled, clock.now_ns().saturating_sub(pass_start)));
+            pass_ns = clock.now_ns().saturating_sub(pass_start);
+            self.foveal_pass = Some((settled, pass_ns));
             // Not cut: every selected pair was settled. The metrics count the pairs of the same
             // prefix within FOVEAL_DEG of the same point, the same test when the radius is not
             // widened by uncertainty.
             self.foveal_known = (!cut && radius == FOVEAL_DEG).then_some(settled);
+        }
+        if let (Some(_), Some(_)) = (
+            foveal_prefix.filter(|_| budget != FrameBudget::Unlimited),
+            fixation_px,
+        ) {
             self.priorities.clear();
             let work = Work {
                 tree: input.tree,
@@ -415,7 +445,9 @@ impl Collider {
                 self.priorities.reached.max(1)
             };
             if matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_)) && n > 0 {
-                let cost = (t1 - t_meter + self.scheduler.ordering_ns()) as f64 / reached as f64;
+                let cost = (t1 - t_meter - pass_ns.min(t1 - t_meter) + self.scheduler.ordering_ns())
+                    as f64
+                    / reached as f64;
                 self.ordering_cost.learn(cost);
             }
         } else {
@@ -459,8 +491,9 @@ impl Collider {
         let deemed = self.narrow.deem_open();
         self.narrow.remember_witnesses(input.world.len());
         let t2 = clock.now_ns();
-        profile.prioritise_ns = t1 - t0;
-        profile.narrow_ns = t2 - t1;
+        // The foveal pass is sphere tests: narrow-phase time.
+        profile.prioritise_ns = (t1 - t0).saturating_sub(pass_ns);
+        profile.narrow_ns = t2 - t1 + pass_ns.min(t1 - t0);
         r.candidate_pairs = self.narrow.pairs.len() as u32;
         r.deemed = deemed;
         r.sphere_tests = self.narrow.tests;
@@ -691,6 +724,63 @@ mod tests {
                 );
                 assert!(!r.ordering_shed && !r.gaze_rings);
             }
+        }
+    }
+
+    /// `fovea_first`: under a wall-clock budget the priced order alone leaves some pairs within
+    /// FOVEAL_DEG of the fixation deemed (those likely to collide are worth little per test);
+    /// with the option, a budget that pays for the foveal pass settles every one of them, and
+    /// the pass's count is the metrics' own. Sphere-test budgets are unchanged by the option.
+    #[test]
+    fn fovea_first_settles_every_foveal_pair_of_a_wall_clock_frame() {
+        let mut cfg = SimConfig::default();
+        cfg.scene.bodies = 2_000;
+        cfg.budget = BudgetSpec::Exact;
+        let mut sim = Simulation::new(cfg.clone()).expect("valid");
+        for _ in 0..10 {
+            sim.step(None, &FrozenClock);
+        }
+        let input = sim.frame_input();
+        let fixation = Some(Fixation::at(0.45, 0.55));
+        let fovea = Fovea::new(input.viewer, input.viewer.to_pixels(0.45, 0.55), FOVEAL_DEG);
+        let pos = &input.world.position;
+        let foveal = input
+            .candidates
+            .iter()
+            .filter(|&&(a, b)| fovea.contains_point((pos[a as usize] + pos[b as usize]) * 0.5))
+            .count() as u32;
+        assert!(foveal > 10, "{foveal}");
+        let mut plain = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+        cfg.fovea_first = true;
+        let mut first = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+        let clock = Ticking(Cell::new(0), 100);
+        let mut shown = 0;
+        for budget_us in [5, 20, 50, 100, 200, 400, 800] {
+            let budget = FrameBudget::Wall(budget_us * 1_000);
+            let (a, b) = (
+                plain.evaluate(&input, fixation, budget, &clock),
+                first.evaluate(&input, fixation, budget, &clock),
+            );
+            assert_eq!((a.foveal_pairs, b.foveal_pairs), (foveal, foveal));
+            assert!(plain.foveal_pass().is_none() && first.foveal_pass().is_some());
+            if let Some(known) = first.foveal_known() {
+                // The pass was not cut: it settled every foveal pair, and counted them.
+                assert_eq!((known, b.foveal_deemed), (foveal, 0), "{budget_us} us");
+                shown += usize::from(a.foveal_deemed > 0);
+            }
+        }
+        assert!(
+            shown > 0,
+            "no budget both pays for the pass and deems a foveal pair without it"
+        );
+        for tests in [0, 500, 5_000] {
+            let budget = FrameBudget::Tests(tests);
+            let (a, b) = (
+                plain.evaluate(&input, fixation, budget, &FrozenClock),
+                first.evaluate(&input, fixation, budget, &FrozenClock),
+            );
+            assert_eq!(a, b);
+            assert!(first.foveal_pass().is_none());
         }
     }
 

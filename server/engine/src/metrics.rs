@@ -441,7 +441,12 @@ const NEAR_PER_THREAD: usize = 32_768;
 
 /// Per body: whether a pair it finds may have its centre in the fovea (see
 /// [`Fovea::may_contain_ball`]), on up to `threads` threads.
-fn near_bodies(f: &Fovea<'_>, position: &[Vec3], reach: f64, threads: usize) -> Vec<bool> {
+pub(crate) fn near_bodies(
+    f: &Fovea<'_>,
+    position: &[Vec3],
+    reach: f64,
+    threads: usize,
+) -> Vec<bool> {
     let mut near = vec![false; position.len()];
     let fill = |out: &mut [bool], ps: &[Vec3]| f.may_contain_balls(ps, reach, out);
     let workers = threads.min(position.len() / NEAR_PER_THREAD).max(1);
