@@ -509,10 +509,12 @@ mod tests {
             "--measure-model=f1:px",
             "--schedule-model=f3:1,2,4,20,100:px",
             "--log-format=json",
+            "--fovea-first",
         ])
         .expect("parse");
         let c = cli.server_config().expect("valid");
         assert_eq!(c.sim.scene.bodies, 10_000);
+        assert!(c.sim.fovea_first);
         assert_eq!(c.sim.scheduler, SchedulerKind::RoundRobin);
         assert_eq!(c.sim.budget, BudgetSpec::WallMs(2.5));
         assert_eq!(c.sim.measure_model, PerceptualModel::f1_pixels());
