@@ -327,12 +327,8 @@ impl Collider {
         // candidate (see `SimConfig::fovea_first`); then the ordering below spends the rest.
         let whole_fovea = foveal_prefix.is_none() && self.fovea_first(budget);
         let mut pass_ns = 0;
-        if let (Some(prefix), Some(px)) = (
-            foveal_prefix
-                .or(whole_fovea.then_some(n))
-                .filter(|_| budget != FrameBudget::Unlimited),
-            fixation_px,
-        ) {
+        if let (Some(prefix), Some(px)) = (foveal_prefix.or(whole_fovea.then_some(n)), fixation_px)
+        {
             let radius = FOVEAL_DEG + fixation.map_or(0.0, |f| f.clamped().uncertainty_deg);
             let fovea = Fovea::new(input.viewer, px, radius.min(89.0));
             let pos = &input.world.position;
@@ -341,7 +337,7 @@ impl Collider {
             // the fovea for the pair's centre to be in it (one pass over the bodies, as the
             // metrics' count does): the exact test is a projection.
             let near = whole_fovea.then(|| {
-                let reach = 3f64.sqrt() * input.tree.root_radius();
+                let reach = metrics::centre_reach(input.tree);
                 metrics::near_bodies(&fovea, pos, reach, self.config.threads as usize)
             });
             // A foveal pair is settled whole, so it is resolved in one go (the same tests as
@@ -371,29 +367,28 @@ impl Collider {
             // prefix within FOVEAL_DEG of the same point, the same test when the radius is not
             // widened by uncertainty.
             self.foveal_known = (!cut && radius == FOVEAL_DEG).then_some(settled);
-        }
-        if let (Some(_), Some(_)) = (
-            foveal_prefix.filter(|_| budget != FrameBudget::Unlimited),
-            fixation_px,
-        ) {
-            self.priorities.clear();
-            let work = Work {
-                tree: input.tree,
-                world: input.world,
-                view: None,
-                priorities: &self.priorities,
-                calibration: &self.calibration,
-            };
-            self.fallback.run(&mut self.narrow, &work, &mut meter);
-            let deemed = self.narrow.deem_open();
-            self.narrow.remember_witnesses(input.world.len());
-            profile.prioritise_ns = 0;
-            profile.narrow_ns = clock.now_ns() - t0;
-            r.candidate_pairs = n as u32;
-            r.deemed = deemed;
-            r.sphere_tests = self.narrow.tests;
-            r.budget_exhausted = meter.was_exhausted();
-            return;
+            // At large N round-robin spends the rest (the regions are the gaze order); over every
+            // candidate, the ordering below does.
+            if !whole_fovea {
+                self.priorities.clear();
+                let work = Work {
+                    tree: input.tree,
+                    world: input.world,
+                    view: None,
+                    priorities: &self.priorities,
+                    calibration: &self.calibration,
+                };
+                self.fallback.run(&mut self.narrow, &work, &mut meter);
+                let deemed = self.narrow.deem_open();
+                self.narrow.remember_witnesses(input.world.len());
+                profile.prioritise_ns = 0;
+                profile.narrow_ns = clock.now_ns() - t0;
+                r.candidate_pairs = n as u32;
+                r.deemed = deemed;
+                r.sphere_tests = self.narrow.tests;
+                r.budget_exhausted = meter.was_exhausted();
+                return;
+            }
         }
         // Under a wall-clock budget too small to pay for ordering the pairs, ordering them would
         // leave less time for the tests than it is worth: shed it, run round-robin, and say so.

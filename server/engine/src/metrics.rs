@@ -223,9 +223,7 @@ pub fn measure_within(
     let runs: Vec<(usize, usize)> = (0..n.div_ceil(CHUNK).max(1))
         .map(|k| (k * CHUNK, ((k + 1) * CHUNK).min(n)))
         .collect();
-    // Candidate boxes overlap (half-size h = the root radius): the centres differ by less than
-    // 2h on each axis, so a pair's centre is within sqrt(3) h of its first body.
-    let centre_reach = 3f64.sqrt() * tree.root_radius();
+    let centre_reach = centre_reach(tree);
     // When every pair is tested and there are pairs enough, the filter is run once per body, in
     // body order and without a branch, and a pair reads one byte of its first body instead of
     // its position (a cache miss in random order); with fewer pairs than a quarter of the
@@ -434,6 +432,13 @@ fn in_runs<T: Send>(
     });
     done.sort_unstable_by_key(|&(k, _)| k);
     done.into_iter().map(|(_, t)| t).collect()
+}
+
+/// How far a candidate pair's centre can be from its first body: candidate boxes overlap
+/// (half-size h = the root radius), so the centres differ by less than 2h on each axis and the
+/// pair's centre is within sqrt(3) h of either body. The reach of [`near_bodies`]'s filter.
+pub(crate) fn centre_reach(tree: &SphereTree) -> f64 {
+    3f64.sqrt() * tree.root_radius()
 }
 
 /// Bodies fewer than this are filtered on one thread: a scoped thread costs tens of microseconds.
