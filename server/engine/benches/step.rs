@@ -18,9 +18,9 @@
 //!   frame 61 with a fixation at the centre (every pair within 5 degrees settled), as it was (each
 //!   pair stepped level by level) and as it is (each resolved in one go, on 1 and 2 threads); per
 //!   foveal pair in the throughput line.
-//! - `measure/{settled,deemed}/100000`: the metrics pass (counts, the fovea count over every
-//!   candidate pair, Δ and P over the deemed ones, sampled beyond 25,000) of one frame at
-//!   N = 100,000 with a fixation, every pair settled exactly or every pair deemed.
+//! - `measure/{settled,deemed}/{10000,100000}`: the metrics pass (counts, the fovea count over
+//!   every candidate pair, Δ and P over the deemed ones, sampled beyond 25,000) of one frame
+//!   with a fixation, every pair settled exactly or every pair deemed.
 //! - `ordering/body-pass/{500,10000}`: the priced scheduler's body pass alone, per body.
 //! - `ordering/{round-robin,priced}/{500,10000}`: what a scheduler spends before its first sphere
 //!   test (the pair list, the body pass, pricing), timed as a frame under a budget of 0 sphere
@@ -264,32 +264,33 @@ fn measure(c: &mut Criterion) {
     let mut g = c.benchmark_group("measure");
     g.measurement_time(Duration::from_secs(8));
     g.sample_size(20);
-    let n = 100_000u32;
-    let mut sim = Simulation::new(exact(n)).expect("valid");
-    for _ in 0..10 {
-        sim.step(None, &FrozenClock);
-    }
-    let fixation = Some(foveal_engine::Fixation::at(0.4, 0.5));
-    let round_robin = SimConfig {
-        scheduler: SchedulerKind::RoundRobin,
-        ..exact(n)
-    };
-    for (name, budget) in [
-        ("settled", FrameBudget::Unlimited),
-        ("deemed", FrameBudget::Tests(0)),
-    ] {
-        let mut col = Collider::new(&round_robin, sim.tree(), sim.viewer()).expect("valid");
-        let input = sim.frame_input();
-        let mut r = FrameReport::default();
-        let mut p = PhaseProfile::default();
-        col.collide(&input, fixation, budget, &FrozenClock, &mut r, &mut p);
-        g.throughput(Throughput::Elements(u64::from(r.candidate_pairs)));
-        g.bench_function(BenchmarkId::new(name, n), |b| {
-            b.iter(|| {
-                col.measure(&input, fixation, &mut r);
-                black_box(r.foveal_pairs)
-            })
-        });
+    for n in [10_000u32, 100_000] {
+        let mut sim = Simulation::new(exact(n)).expect("valid");
+        for _ in 0..10 {
+            sim.step(None, &FrozenClock);
+        }
+        let fixation = Some(foveal_engine::Fixation::at(0.4, 0.5));
+        let round_robin = SimConfig {
+            scheduler: SchedulerKind::RoundRobin,
+            ..exact(n)
+        };
+        for (name, budget) in [
+            ("settled", FrameBudget::Unlimited),
+            ("deemed", FrameBudget::Tests(0)),
+        ] {
+            let mut col = Collider::new(&round_robin, sim.tree(), sim.viewer()).expect("valid");
+            let input = sim.frame_input();
+            let mut r = FrameReport::default();
+            let mut p = PhaseProfile::default();
+            col.collide(&input, fixation, budget, &FrozenClock, &mut r, &mut p);
+            g.throughput(Throughput::Elements(u64::from(r.candidate_pairs)));
+            g.bench_function(BenchmarkId::new(name, n), |b| {
+                b.iter(|| {
+                    col.measure(&input, fixation, &mut r);
+                    black_box(r.foveal_pairs)
+                })
+            });
+        }
     }
     g.finish();
 }
