@@ -59,6 +59,9 @@ const FOVEAL_MAX_SHARE: f64 = 0.6;
 /// Most the learnt tail per pair may grow in one frame (see [`Shedder::learn`]).
 const TAIL_RISE: f64 = 1.5;
 
+/// Weight of a cheaper frame's tail per pair in the learnt one (see [`Shedder::learn`]).
+const TAIL_FALL: f64 = 0.02;
+
 /// Smallest sample of deemed pairs whatever the budget: its standard error is reported. Small
 /// enough for the paper's N and budget (0.1 ms, of which 32 pairs' Δ and P take about 5 us).
 pub const MIN_SAMPLE: u32 = 32;
@@ -211,6 +214,15 @@ impl Shedder {
     /// by at most [`TAIL_RISE`]: on a shared machine a single frame's tail can be ten times the
     /// usual (a page-fault storm, a preempted thread), and taken whole it made the broad phase
     /// shed every region, the foveal ones included, for the twenty frames it took to decay.
+    ///
+    /// It falls by [`TAIL_FALL`] of the difference a frame, close to an envelope of the recent
+    /// frames rather than their mean: a frame's tail per pair depends on how many of its pairs
+    /// end up deemed (the response exchanges their velocities, a cache miss each at a million
+    /// bodies), which swings by 2-3x from frame to frame, and an estimate that followed the cheap
+    /// frames (it fell by a tenth a frame) overran the budget in the next expensive one by the
+    /// difference: 2-4 ms of a 50 ms frame at 1,000,000 bodies, every 5-20 frames. The price:
+    /// after a stall the estimate stays high for longer (it loses a fifth of the excess in ten
+    /// frames), so a loaded machine sheds more.
     pub fn learn(&mut self, searched: usize, tail_ns: u64, pairs: usize) {
         self.learn_shed(searched, tail_ns, pairs);
     }
@@ -250,7 +262,7 @@ impl Shedder {
             let cost = tail_ns as f64 / pairs as f64;
             self.tail_ns_per_pair = Some(match self.tail_ns_per_pair {
                 Some(old) if cost > old => cost.min(TAIL_RISE * old),
-                Some(old) => 0.9 * old + 0.1 * cost,
+                Some(old) => (1.0 - TAIL_FALL) * old + TAIL_FALL * cost,
                 None => cost,
             });
         }
@@ -307,6 +319,31 @@ mod tests {
     use crate::simulation::Simulation;
     use crate::world::World;
     use std::cell::Cell;
+
+    /// Cheap frames between expensive ones do not wear the estimate down to the cheap frames'
+    /// tail: once it has risen to the expensive frames' (at most TAIL_RISE a frame, so after two
+    /// of them), it still covers nine tenths of theirs before each (a fall of a tenth a frame
+    /// left three quarters).
+    #[test]
+    fn the_learnt_tail_covers_the_expensive_frames_among_cheap_ones() {
+        let mut s = Shedder::default();
+        let deadline = 16_000_000;
+        let (pairs, cheap, dear) = (1_000, 1_000_000, 2_000_000);
+        for frame in 0..80 {
+            if frame % 8 == 7 {
+                let covered = deadline - s.narrow_deadline(deadline, pairs);
+                if frame > 16 {
+                    assert!(
+                        10 * covered >= 9 * dear,
+                        "frame {frame}: {covered} ns of {dear}"
+                    );
+                }
+                s.learn(0, dear, pairs);
+            } else {
+                s.learn(0, cheap, pairs);
+            }
+        }
+    }
 
     /// One slow frame raises the learnt tail by at most TAIL_RISE; a run of them raises it to
     /// what they cost; a fast frame lowers it slowly.
