@@ -106,10 +106,22 @@ pub struct Pacer {
 impl Pacer {
     /// Whether the next region may be searched, at `now` with `pairs` found so far: it is assumed
     /// to cost what the last one did, in time and in pairs.
+    ///
+    /// At the first call (the sort is done) the reserve in force for the first regions is cut to
+    /// half the time left if it is more: a fixed reserve larger than what the sort left would
+    /// have the frame search nothing and end early with the time unused (at 1,000,000 bodies on
+    /// one thread integration and the sort take about 35 ms of a 50 ms frame, against a reserve
+    /// of 15 ms), where half of it searches the regions nearest the fixation and the other half
+    /// settles what they hold.
     pub fn go_on(&mut self, now: u64, pairs: usize) -> bool {
         let (dt, dp) = match self.last {
             Some((t, p)) => (now.saturating_sub(t), pairs.saturating_sub(p)),
-            None => (0, 0),
+            None => {
+                let half_left = self.deadline.saturating_sub(now) / 2;
+                let first = usize::from(self.foveal_regions == 0);
+                self.reserve[first] = self.reserve[first].min(half_left);
+                (0, 0)
+            }
         };
         self.last = Some((now, pairs));
         let reserve = self.reserve[usize::from(self.calls >= self.foveal_regions)];
@@ -343,6 +355,27 @@ mod tests {
                 s.learn(0, cheap, pairs);
             }
         }
+    }
+
+    /// When the sort leaves less than twice the reserve, the first regions are still searched
+    /// with half of what is left; with time enough the reserve is kept whole.
+    #[test]
+    fn a_late_sort_still_searches_the_first_regions() {
+        let s = Shedder::default();
+        let (budget, deadline) = (50_000_000, 100_000_000);
+        let reserve = (NARROW_RESERVE * budget as f64) as u64;
+        let mut late = s.pacer(deadline, budget);
+        assert!(late.go_on(deadline - reserve + 1_000_000, 0), "searched");
+        assert!(
+            !late.go_on(deadline - reserve / 4, 0),
+            "and no further than half"
+        );
+        let mut early = s.pacer(deadline, budget);
+        assert!(early.go_on(deadline - 40_000_000, 0));
+        assert!(
+            !early.go_on(deadline - 25_000_000, 0),
+            "the whole reserve is kept when the sort left enough"
+        );
     }
 
     /// One slow frame raises the learnt tail by at most TAIL_RISE; a run of them raises it to
