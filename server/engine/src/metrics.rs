@@ -239,40 +239,50 @@ pub fn measure_within(
         // Four interleaved histograms: consecutive pairs mostly share a bin, and one counter
         // would make every increment wait for the last.
         let mut hist = [[0u32; BINS]; 4];
-        for (i, p) in pairs[lo..hi].iter().enumerate() {
-            hist[i & 3][bin(p.status, p.resolved_level)] += 1;
+        let pos = &world.position;
+        let mid = |p: &PairState| (pos[p.a as usize] + pos[p.b as usize]) * 0.5;
+        let f = fovea.filter(|_| lo < fovea_end);
+        if let (Some(f), Some(near)) = (f, &near) {
+            // Every pair, a few percent of them foveal: the first body rules most out. One pass
+            // counts and tests, so each pair is read once.
+            for (i, p) in pairs[lo..hi].iter().enumerate() {
+                hist[i & 3][bin(p.status, p.resolved_level)] += 1;
+                if near[p.a as usize] && f.contains_point(mid(p)) {
+                    c.foveal += 1;
+                    c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
+                }
+            }
+        } else {
+            for (i, p) in pairs[lo..hi].iter().enumerate() {
+                hist[i & 3][bin(p.status, p.resolved_level)] += 1;
+            }
+            if let Some(f) = f {
+                let tested = &pairs[lo..hi.min(fovea_end)];
+                if fovea_end < n {
+                    // A shed frame's prefix: the pairs of the regions that may hold foveal
+                    // pairs, about half of them foveal. Every centre is tested, without a
+                    // branch on the outcome.
+                    for p in tested {
+                        let inside = f.contains_point(mid(p));
+                        c.foveal += u32::from(inside);
+                        c.foveal_deemed += u32::from(inside & (p.status == PairStatus::Deemed));
+                    }
+                } else {
+                    // Every pair of a frame with few pairs for its bodies: the filter per pair.
+                    for p in tested {
+                        if f.may_contain_ball(pos[p.a as usize], centre_reach)
+                            && f.contains_point(mid(p))
+                        {
+                            c.foveal += 1;
+                            c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
+                        }
+                    }
+                }
+            }
         }
         for h in &hist {
             for (a, b) in c.hist.iter_mut().zip(h) {
                 *a += b;
-            }
-        }
-        let Some(f) = fovea.filter(|_| lo < fovea_end) else {
-            return c;
-        };
-        let pos = &world.position;
-        let mid = |p: &PairState| (pos[p.a as usize] + pos[p.b as usize]) * 0.5;
-        let tested = &pairs[lo..hi.min(fovea_end)];
-        if fovea_end < n {
-            // A shed frame's prefix: the pairs of the regions that may hold foveal pairs, about
-            // half of them foveal. Every centre is tested, without a branch on the outcome.
-            for p in tested {
-                let inside = f.contains_point(mid(p));
-                c.foveal += u32::from(inside);
-                c.foveal_deemed += u32::from(inside & (p.status == PairStatus::Deemed));
-            }
-        } else {
-            // Every pair, a few percent of them foveal: the first body rules most out.
-            for p in tested {
-                let a = p.a as usize;
-                let maybe = match &near {
-                    Some(near) => near[a],
-                    None => f.may_contain_ball(pos[a], centre_reach),
-                };
-                if maybe && f.contains_point(mid(p)) {
-                    c.foveal += 1;
-                    c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
-                }
             }
         }
         c
