@@ -236,26 +236,20 @@ pub fn measure_within(
         .map(|f| near_bodies(f, &world.position, centre_reach, threads));
     let count = |lo: usize, hi: usize| -> Counts {
         let mut c = Counts::default();
-        // Four interleaved histograms: consecutive pairs mostly share a bin, and one counter
-        // would make every increment wait for the last.
-        let mut hist = [[0u32; BINS]; 4];
         let pos = &world.position;
         let mid = |p: &PairState| (pos[p.a as usize] + pos[p.b as usize]) * 0.5;
         let f = fovea.filter(|_| lo < fovea_end);
-        if let (Some(f), Some(near)) = (f, &near) {
+        let hist = if let (Some(f), Some(near)) = (f, &near) {
             // Every pair, a few percent of them foveal: the first body rules most out. One pass
             // counts and tests, so each pair is read once.
-            for (i, p) in pairs[lo..hi].iter().enumerate() {
-                hist[i & 3][bin(p.status, p.resolved_level)] += 1;
+            histogram_and(&pairs[lo..hi], |p| {
                 if near[p.a as usize] && f.contains_point(mid(p)) {
                     c.foveal += 1;
                     c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
                 }
-            }
+            })
         } else {
-            for (i, p) in pairs[lo..hi].iter().enumerate() {
-                hist[i & 3][bin(p.status, p.resolved_level)] += 1;
-            }
+            let hist = histogram_and(&pairs[lo..hi], |_| {});
             if let Some(f) = f {
                 let tested = &pairs[lo..hi.min(fovea_end)];
                 if fovea_end < n {
@@ -279,7 +273,8 @@ pub fn measure_within(
                     }
                 }
             }
-        }
+            hist
+        };
         for h in &hist {
             for (a, b) in c.hist.iter_mut().zip(h) {
                 *a += b;
@@ -333,6 +328,19 @@ pub fn measure_within(
     }
     m.stride = stride as u32;
     m
+}
+
+/// The status and level histogram of `pairs`, calling `also` on each pair in the same pass. Four
+/// interleaved histograms (summed by the caller): consecutive pairs mostly share a bin, and one
+/// counter would make every increment wait for the last.
+#[inline]
+fn histogram_and(pairs: &[PairState], mut also: impl FnMut(&PairState)) -> [[u32; BINS]; 4] {
+    let mut hist = [[0u32; BINS]; 4];
+    for (i, p) in pairs.iter().enumerate() {
+        hist[i & 3][bin(p.status, p.resolved_level)] += 1;
+        also(p);
+    }
+    hist
 }
 
 /// Histogram bins: one per status and resolved level.

@@ -114,17 +114,16 @@ impl Pacer {
     /// of 15 ms), where half of it searches the regions nearest the fixation and the other half
     /// settles what they hold.
     pub fn go_on(&mut self, now: u64, pairs: usize) -> bool {
+        let k = usize::from(self.calls >= self.foveal_regions);
         let (dt, dp) = match self.last {
             Some((t, p)) => (now.saturating_sub(t), pairs.saturating_sub(p)),
             None => {
-                let half_left = self.deadline.saturating_sub(now) / 2;
-                let first = usize::from(self.foveal_regions == 0);
-                self.reserve[first] = self.reserve[first].min(half_left);
+                self.reserve[k] = self.reserve[k].min(self.deadline.saturating_sub(now) / 2);
                 (0, 0)
             }
         };
         self.last = Some((now, pairs));
-        let reserve = self.reserve[usize::from(self.calls >= self.foveal_regions)];
+        let reserve = self.reserve[k];
         self.calls += 1;
         let tail = self.tail_ns_per_pair * (pairs + dp) as f64;
         (now + dt + reserve) as f64 + tail <= self.deadline as f64
