@@ -515,7 +515,7 @@ impl Collider {
         effort: metrics::Effort,
         r: &mut FrameReport,
     ) {
-        self.measure_metrics(input, fixation, effort, r);
+        self.measure_metrics(input, fixation, effort, None, r);
         self.audit_frame(input, fixation, r);
     }
 
@@ -558,19 +558,22 @@ impl Collider {
         ));
     }
 
-    /// The metrics of [`Self::measure_within`] without the audit.
+    /// The metrics of [`Self::measure_within`] without the audit. With a `clock`, returns the
+    /// pairs whose Δ and P were summed and the clock's reading when that sum started (the
+    /// metrics' last work: the caller's next reading ends it).
     pub fn measure_metrics(
         &mut self,
         input: &FrameInput<'_>,
         fixation: Option<Fixation>,
         effort: metrics::Effort,
+        clock: Option<&dyn Clock>,
         r: &mut FrameReport,
-    ) {
+    ) -> (u32, Option<u64>) {
         let view = self.measure_view(input, fixation);
         let fixation_px = view.as_ref().map(|v| v.fixation_px);
         let (tree, world) = (input.tree, input.world);
         let fovea = fixation_px.map(|px| Fovea::new(input.viewer, px, FOVEAL_DEG));
-        let m = metrics::measure_within(
+        let m = metrics::measure_timed(
             &self.narrow,
             tree,
             world,
@@ -578,6 +581,7 @@ impl Collider {
             fovea.as_ref(),
             self.config.threads as usize,
             effort,
+            clock,
         );
         r.real_collisions = m.real;
         r.resolved_per_level = m.per_level;
@@ -588,6 +592,7 @@ impl Collider {
         r.perceived_inaccuracy_se = view.map(|_| m.p_se);
         r.foveal_pairs = m.foveal;
         r.foveal_deemed = m.foveal_deemed;
+        (m.sampled, m.sample_started_ns)
     }
 
     /// One open-loop frame: collide and measure `input` under `budget`, as a report (integration,

@@ -14,6 +14,7 @@
 //! so the result is the same for every thread count; a frame of at most one run sums in plain
 //! pair order.
 
+use crate::budget::Clock;
 use crate::fixation::FrameView;
 use crate::math::Vec3;
 use crate::narrow_phase::{NarrowPhase, PairState, PairStatus};
@@ -48,6 +49,11 @@ pub struct Metrics {
     pub foveal: u32,
     /// Of those, deemed.
     pub foveal_deemed: u32,
+    /// Deemed pairs whose Δ and P were summed (the sample, or every deemed pair when exact).
+    pub sampled: u32,
+    /// The clock's reading when that sum started (None when measured without a clock or with
+    /// nothing deemed): it is the pass's last work, so the caller's next reading ends it.
+    pub sample_started_ns: Option<u64>,
 }
 
 /// A fovea test: whether a screen point is within a visual angle of the fixation, exact in f64:
@@ -218,6 +224,23 @@ pub fn measure_within(
     threads: usize,
     effort: Effort,
 ) -> Metrics {
+    measure_timed(np, tree, world, view, fovea, threads, effort, None)
+}
+
+/// [`measure_within`], reading `clock` when the sum of Δ and P starts
+/// ([`Metrics::sample_started_ns`]) so that a whole-frame budget can size the next frame's sample
+/// by what a sampled pair costs here.
+#[allow(clippy::too_many_arguments)]
+pub fn measure_timed(
+    np: &NarrowPhase,
+    tree: &SphereTree,
+    world: &World,
+    view: Option<&FrameView<'_>>,
+    fovea: Option<&Fovea<'_>>,
+    threads: usize,
+    effort: Effort,
+    clock: Option<&dyn Clock>,
+) -> Metrics {
     let pairs = &np.pairs[..];
     let n = pairs.len();
     let runs: Vec<(usize, usize)> = (0..n.div_ceil(CHUNK).max(1))
@@ -294,6 +317,7 @@ pub fn measure_within(
     let deemed = counts.of(PairStatus::Deemed);
     let stride = deemed.div_ceil(effort.sample_limit.max(1)).max(1) as usize;
     if deemed > 0 {
+        m.sample_started_ns = clock.map(|c| c.now_ns());
         let sample = |lo: usize, hi: usize| -> Sums {
             let mut s = Sums::default();
             for i in (lo.next_multiple_of(stride)..hi).step_by(stride) {
@@ -301,6 +325,7 @@ pub fn measure_within(
                     continue;
                 }
                 let ev = np.evidence(i, tree, world);
+                s.pairs += 1;
                 s.delta += ev.gap;
                 s.delta_sq += ev.gap * ev.gap;
                 if let Some(v) = view {
@@ -315,6 +340,7 @@ pub fn measure_within(
         for s in in_runs(&runs, threads, &sample) {
             total.add(&s);
         }
+        m.sampled = total.pairs;
         m.delta = total.delta;
         m.p = total.p;
         if stride > 1 {
@@ -404,6 +430,7 @@ impl Counts {
 /// Pass 2's floating-point sums of one run.
 #[derive(Debug, Clone, Copy, Default)]
 struct Sums {
+    pairs: u32,
     delta: f64,
     p: f64,
     delta_sq: f64,
@@ -412,6 +439,7 @@ struct Sums {
 
 impl Sums {
     fn add(&mut self, o: &Sums) {
+        self.pairs += o.pairs;
         self.delta += o.delta;
         self.p += o.p;
         self.delta_sq += o.delta_sq;

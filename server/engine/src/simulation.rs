@@ -329,16 +329,24 @@ impl Simulation {
         let effort = match deadline {
             Some((_, ns)) => crate::metrics::Effort {
                 foveal_known: self.collider.foveal_known(),
-                ..Shedder::effort(ns, foveal_prefix.unwrap_or(usize::MAX))
+                ..self.shedder.effort(ns, foveal_prefix.unwrap_or(usize::MAX))
             },
             None => crate::metrics::Effort::default(),
         };
-        self.collider
-            .measure_metrics(&input, fixation, effort, &mut r);
+        let (sampled, sample_started) = self.collider.measure_metrics(
+            &input,
+            fixation,
+            effort,
+            deadline.map(|_| clock),
+            &mut r,
+        );
         // The tail a whole-frame budget learns ends here: the audit (a diagnostic, checking every
         // deemed pair exactly) runs after the budgeted work. Counted as tail, its cost, which
         // grows with the deemed pairs, would deem more pairs the next frame, until every pair is.
         let t_tail = clock.now_ns();
+        if let Some(t) = sample_started {
+            self.shedder.learn_sample(sampled, t_tail.saturating_sub(t));
+        }
         self.collider.audit_frame(&input, fixation, &mut r);
         if r.stale_regions > 0
             && let Some(a) = r.audit.as_mut()
@@ -383,7 +391,7 @@ impl Simulation {
                 ..crate::metrics::Effort::default()
             };
             self.collider
-                .measure_metrics(&input, r.fixation, every_pair, &mut r);
+                .measure_metrics(&input, r.fixation, every_pair, None, &mut r);
             self.report = r;
         }
         &self.report
