@@ -573,7 +573,7 @@ impl Collider {
         let fixation_px = view.as_ref().map(|v| v.fixation_px);
         let (tree, world) = (input.tree, input.world);
         let fovea = fixation_px.map(|px| Fovea::new(input.viewer, px, FOVEAL_DEG));
-        let m = metrics::measure_timed(
+        let m = metrics::measure_within(
             &self.narrow,
             tree,
             world,

@@ -203,7 +203,16 @@ pub fn measure(
     fovea: Option<&Fovea<'_>>,
     threads: usize,
 ) -> Metrics {
-    measure_within(np, tree, world, view, fovea, threads, Effort::default())
+    measure_within(
+        np,
+        tree,
+        world,
+        view,
+        fovea,
+        threads,
+        Effort::default(),
+        None,
+    )
 }
 
 /// [`measure`] within an [`Effort`].
@@ -215,23 +224,12 @@ pub fn measure(
 /// 2. **Δ and P** over the sample only: the deemed pairs whose index is a multiple of the stride,
 ///    which pass 1's deemed count fixes. The pass visits one pair in `stride` (in an exact frame,
 ///    none), and its floating-point partial sums are added in run order.
-pub fn measure_within(
-    np: &NarrowPhase,
-    tree: &SphereTree,
-    world: &World,
-    view: Option<&FrameView<'_>>,
-    fovea: Option<&Fovea<'_>>,
-    threads: usize,
-    effort: Effort,
-) -> Metrics {
-    measure_timed(np, tree, world, view, fovea, threads, effort, None)
-}
-
-/// [`measure_within`], reading `clock` when the sum of Δ and P starts
-/// ([`Metrics::sample_started_ns`]) so that a whole-frame budget can size the next frame's sample
-/// by what a sampled pair costs here.
+///
+/// With a `clock`, the clock is read when the sum of Δ and P starts
+/// ([`Metrics::sample_started_ns`]): that sum is the pass's last work, so a whole-frame budget's
+/// next reading ends it and can size the next frame's sample by what it cost here.
 #[allow(clippy::too_many_arguments)]
-pub fn measure_timed(
+pub fn measure_within(
     np: &NarrowPhase,
     tree: &SphereTree,
     world: &World,
@@ -309,6 +307,8 @@ pub fn measure_timed(
     for c in in_runs(&runs, threads, &count) {
         counts.add(&c);
     }
+    // Freed before the sum starts: the sum's timing is the sum's.
+    drop(near);
     let mut m = counts.metrics();
     if let Some(known) = effort.foveal_known {
         m.foveal = known;
@@ -570,7 +570,19 @@ mod tests {
             sample_limit: n / 10,
             ..Effort::default()
         };
-        let sampled = measure_within(&np, &tree, &world, Some(&view), Some(&fovea), 1, limit);
+        let on = |threads| {
+            measure_within(
+                &np,
+                &tree,
+                &world,
+                Some(&view),
+                Some(&fovea),
+                threads,
+                limit,
+                None,
+            )
+        };
+        let sampled = on(1);
         assert!(sampled.stride >= 10, "{}", sampled.stride);
         assert!(
             (sampled.delta - exact.delta).abs() <= 4.0 * sampled.delta_se && sampled.delta_se > 0.0,
@@ -586,8 +598,7 @@ mod tests {
             (exact.foveal, exact.foveal)
         );
         assert!(exact.foveal > 0 && exact.foveal < n);
-        let two = measure_within(&np, &tree, &world, Some(&view), Some(&fovea), 2, limit);
-        assert_eq!(two, sampled);
+        assert_eq!(on(2), sampled);
     }
 
     /// On a frame of every status and level, over more than one run of pairs: the counts equal a
@@ -628,7 +639,19 @@ mod tests {
                 fovea_pairs: prefix,
                 foveal_known: None,
             };
-            let m = measure_within(&np, &tree, &world, Some(&view), Some(&fovea), 1, effort);
+            let on = |threads, clock: Option<&dyn Clock>| {
+                measure_within(
+                    &np,
+                    &tree,
+                    &world,
+                    Some(&view),
+                    Some(&fovea),
+                    threads,
+                    effort,
+                    clock,
+                )
+            };
+            let m = on(1, None);
             let mut want = Metrics::default();
             let deemed = np
                 .pairs
@@ -647,12 +670,15 @@ mod tests {
                     want.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
                 }
                 if p.status == PairStatus::Deemed && i % stride == 0 {
+                    want.sampled += 1;
                     let ev = np.evidence(i, &tree, &world);
                     delta += ev.gap;
                     p_sum += view.weight(&ev);
                 }
             }
             assert_eq!(m.stride as usize, stride);
+            assert_eq!(m.sampled, want.sampled);
+            assert_eq!(m.sample_started_ns, None, "no clock, no reading");
             assert_eq!((m.real, m.per_level), (want.real, want.per_level));
             assert_eq!(
                 (m.foveal, m.foveal_deemed),
@@ -668,17 +694,18 @@ mod tests {
             );
             assert!((m.p - k * p_sum).abs() <= 1e-9 * m.p.abs());
             for threads in [2, 3] {
-                let t = measure_within(
-                    &np,
-                    &tree,
-                    &world,
-                    Some(&view),
-                    Some(&fovea),
-                    threads,
-                    effort,
-                );
-                assert_eq!(t, m, "{threads} threads");
+                assert_eq!(on(threads, None), m, "{threads} threads");
             }
+            // With a clock (frozen at 0): the same sums, and the reading that starts the sum.
+            let timed = on(1, Some(&crate::FrozenClock));
+            assert_eq!(timed.sample_started_ns, Some(0));
+            assert_eq!(
+                Metrics {
+                    sample_started_ns: None,
+                    ..timed
+                },
+                m
+            );
         }
     }
 

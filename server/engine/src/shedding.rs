@@ -44,7 +44,7 @@ pub const NARROW_RESERVE: f64 = 0.3;
 /// Share of the budget the sampled Δ and P sums may take.
 pub const METRICS_SHARE: f64 = 0.015;
 
-/// Cost of one sampled pair's Δ and P (its evidence, a projection and two visual angles), ns:
+/// Cost of one sampled pair's Δ and P (its evidence, three projections and two visual angles), ns:
 /// converts [`METRICS_SHARE`] into a sample size until a frame has measured it (see
 /// [`Shedder::learn_sample`]).
 pub const SAMPLE_NS: f64 = 150.0;
@@ -268,7 +268,9 @@ impl Shedder {
                 0.8 * self.foveal_pairs + 0.2 * count
             };
         }
-        if settled > 0 {
+        // A clock that did not advance says nothing about the cost (and a learnt 0 could never
+        // rise again).
+        if settled > 0 && ns > 0 {
             let cost = ns as f64 / f64::from(settled);
             self.foveal_ns_per_pair = Some(match self.foveal_ns_per_pair {
                 Some(old) if cost > old => cost.min(TAIL_RISE * old),
@@ -282,19 +284,25 @@ impl Shedder {
     /// pair costs (its evidence, three projections, two visual angles) depends on the machine
     /// and on the scene's memory footprint (190-220 ns at 10,000 bodies here, against the 150
     /// ns assumed before), and the sample sized on a fixed guess overspent its share of the
-    /// budget by a third. Smoothed like the foveal pairs' count (a fifth of each frame), but
-    /// rising at most [`TAIL_RISE`] a frame, so that one stalled sum does not shrink the next
-    /// frames' samples to the minimum.
+    /// budget by a third. Smoothed like the foveal pairs' count (a fifth of each frame) from the
+    /// assumed [`SAMPLE_NS`], rising at most [`TAIL_RISE`] a frame, so that one stalled sum (or
+    /// the first, on cold caches) does not shrink the next frames' samples to the minimum.
+    ///
+    /// The time is the whole sum's, so it includes the sum's fixed part (reading the status of
+    /// every pair at the stride; with several threads and more than one run of pairs, starting
+    /// a thread, tens of microseconds): spread over the pairs, it sizes the sample so that the
+    /// whole sum keeps to its share, and where that fixed part alone nears the share (a large
+    /// scene on several threads with a budget of a few milliseconds) the sample falls towards
+    /// [`MIN_SAMPLE`].
     pub fn learn_sample(&mut self, pairs: u32, ns: u64) {
-        // A handful of pairs times mostly the pass's fixed cost.
-        if pairs < MIN_SAMPLE {
+        // A handful of pairs times mostly the pass's fixed cost, and a clock that did not
+        // advance says nothing.
+        if pairs < MIN_SAMPLE || ns == 0 {
             return;
         }
         let cost = ns as f64 / f64::from(pairs);
-        self.sample_ns_per_pair = Some(match self.sample_ns_per_pair {
-            Some(old) => (0.8 * old + 0.2 * cost).min(TAIL_RISE * old),
-            None => cost,
-        });
+        let old = self.sample_ns_per_pair.unwrap_or(SAMPLE_NS);
+        self.sample_ns_per_pair = Some((0.8 * old + 0.2 * cost).min(TAIL_RISE * old));
     }
 
     fn learn_shed(&mut self, searched: usize, tail_ns: u64, pairs: usize) {
@@ -436,8 +444,9 @@ mod tests {
         s.learn_sample(n, 10_000_000);
         let after = s.effort(budget, 0).sample_limit;
         assert!(3 * after >= 2 * n - 3, "{after} after a stall, {n} before");
-        // Too few pairs to time the pass by: ignored.
+        // Too few pairs to time the pass by, or a clock that did not advance: ignored.
         s.learn_sample(MIN_SAMPLE - 1, 10_000_000);
+        s.learn_sample(n, 0);
         assert_eq!(s.effort(budget, 0).sample_limit, after);
     }
 
