@@ -603,6 +603,7 @@ mod tests {
             (30_000_000, 0.2),
             (400_000, 0.5),
             (900_000, 0.3),
+            (150_000, 0.5),
         ] {
             let mut sim = Simulation::new(SimConfig {
                 scene: SceneConfig::paper(20_000, 5),
