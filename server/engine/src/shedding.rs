@@ -272,11 +272,7 @@ impl Shedder {
         // rise again).
         if settled > 0 && ns > 0 {
             let cost = ns as f64 / f64::from(settled);
-            self.foveal_ns_per_pair = Some(match self.foveal_ns_per_pair {
-                Some(old) if cost > old => cost.min(TAIL_RISE * old),
-                Some(old) => (1.0 - FOVEAL_FALL) * old + FOVEAL_FALL * cost,
-                None => cost,
-            });
+            self.foveal_ns_per_pair = Some(envelope(self.foveal_ns_per_pair, cost, FOVEAL_FALL));
         }
     }
 
@@ -314,12 +310,19 @@ impl Shedder {
         }
         if pairs > 0 {
             let cost = tail_ns as f64 / pairs as f64;
-            self.tail_ns_per_pair = Some(match self.tail_ns_per_pair {
-                Some(old) if cost > old => cost.min(TAIL_RISE * old),
-                Some(old) => (1.0 - TAIL_FALL) * old + TAIL_FALL * cost,
-                None => cost,
-            });
+            self.tail_ns_per_pair = Some(envelope(self.tail_ns_per_pair, cost, TAIL_FALL));
         }
+    }
+}
+
+/// A cost learnt as an envelope of the recent frames' (the tail's and the foveal pass's): a dearer
+/// frame raises it at once, by at most [`TAIL_RISE`] (one stalled frame is not taken whole), and a
+/// cheaper one lowers it by `fall` of the difference; the first measurement is taken as it is.
+fn envelope(old: Option<f64>, cost: f64, fall: f64) -> f64 {
+    match old {
+        Some(old) if cost > old => cost.min(TAIL_RISE * old),
+        Some(old) => (1.0 - fall) * old + fall * cost,
+        None => cost,
     }
 }
 
