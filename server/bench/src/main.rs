@@ -463,6 +463,11 @@ struct ScaleArgs {
     /// (`SimConfig::fovea_first`).
     #[arg(long)]
     fovea_first: bool,
+    /// Run the whole plan this many times, round after round (1-25), and report each
+    /// configuration's median run with the spread of its runs: a sitting's drift then reaches
+    /// every configuration alike.
+    #[arg(long, default_value_t = 1)]
+    repeat: u32,
     /// Output directory (scale.csv, scale.md).
     #[arg(long, default_value = foveal_bench::scale::DEFAULT_OUT)]
     out: PathBuf,
@@ -493,12 +498,13 @@ fn scale(args: &ScaleArgs) -> Result<()> {
         seed: args.seed,
         scheduler: args.scheduler,
         fovea_first: args.fovea_first,
+        repeat: args.repeat,
         out: args.out.clone(),
     };
     let exe = std::env::current_exe().context("locating the foveal-bench binary")?;
     eprintln!(
         "foveal-bench scale: {} runs -> {}",
-        cfg.plan().len(),
+        cfg.plan().len() * cfg.repeat as usize,
         cfg.out.display()
     );
     let out = scale::run(&cfg, &exe, true).context("scale run failed")?;

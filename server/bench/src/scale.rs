@@ -210,6 +210,10 @@ pub struct RunResult {
     pub warmup_s: f64,
     /// 1-minute load average when the run started (`None` without `/proc/loadavg`).
     pub load1_start: Option<f64>,
+    /// Round of a repeated scale run this run belongs to (1-based; set by the parent, 0 from a
+    /// child).
+    #[serde(default)]
+    pub round: u32,
 }
 
 /// The whole command.
@@ -235,9 +239,14 @@ pub struct ScaleConfig {
     pub scheduler: SchedulerKind,
     /// `SimConfig::fovea_first` in every run.
     pub fovea_first: bool,
+    /// Rounds: the whole plan is run this many times, one round after another (1..=[`MAX_REPEAT`]).
+    pub repeat: u32,
     /// Output directory.
     pub out: PathBuf,
 }
+
+/// Most rounds of a repeated scale run: beyond this a sitting drifts more than repeats settle.
+pub const MAX_REPEAT: u32 = 25;
 
 impl Default for ScaleConfig {
     fn default() -> Self {
@@ -252,6 +261,7 @@ impl Default for ScaleConfig {
             seed: 1,
             scheduler: SimConfig::default().scheduler,
             fovea_first: false,
+            repeat: 1,
             out: PathBuf::from(DEFAULT_OUT),
         }
     }
@@ -305,6 +315,12 @@ impl ScaleConfig {
         }
         if self.frames == Some(0) {
             return bad("at least one measured frame is needed".into());
+        }
+        if !(1..=MAX_REPEAT).contains(&self.repeat) {
+            return bad(format!(
+                "repeat {} is out of range: give 1 to {MAX_REPEAT} rounds",
+                self.repeat
+            ));
         }
         if self.budget_ms.len() > 1 && self.budget_ms.len() != self.ns.len() {
             return bad(format!(
@@ -525,6 +541,7 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         setup_s,
         warmup_s,
         load1_start,
+        round: 0,
     })
 }
 
@@ -597,11 +614,54 @@ pub struct TargetCheck {
     pub at_least: bool,
 }
 
+/// The spread of one configuration's repeated runs: the least and greatest step p50 and p99 (ms).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spread {
+    /// Runs of the configuration.
+    pub runs: usize,
+    /// Step p50, least and greatest.
+    pub p50: [f64; 2],
+    /// Step p99, least and greatest.
+    pub p99: [f64; 2],
+}
+
+/// One row per configuration from `runs`, the results of `rounds` whole plans of `plan_len`
+/// configurations, round after round: each configuration's run with the median step p50 (the
+/// lower of the middle two for an even count; a real run, so its columns belong together), and
+/// the spread of its runs (None for a single run).
+pub fn median_runs(plan_len: usize, runs: &[RunResult]) -> (Vec<RunResult>, Vec<Option<Spread>>) {
+    let mut rows = Vec::with_capacity(plan_len);
+    let mut spreads = Vec::with_capacity(plan_len);
+    for i in 0..plan_len.min(runs.len()) {
+        let mut mine: Vec<&RunResult> = runs.iter().skip(i).step_by(plan_len).collect();
+        mine.sort_by(|a, b| a.step_p50_ms.total_cmp(&b.step_p50_ms));
+        rows.push(mine[(mine.len() - 1) / 2].clone());
+        let range = |f: fn(&RunResult) -> f64| {
+            let v = mine.iter().map(|r| f(r));
+            [
+                v.clone().fold(f64::INFINITY, f64::min),
+                v.fold(f64::NEG_INFINITY, f64::max),
+            ]
+        };
+        spreads.push((mine.len() > 1).then(|| Spread {
+            runs: mine.len(),
+            p50: range(|r| r.step_p50_ms),
+            p99: range(|r| r.step_p99_ms),
+        }));
+    }
+    (rows, spreads)
+}
+
 /// What a scale run produced.
 #[derive(Debug, Clone, Default)]
 pub struct ScaleOutput {
-    /// Every run, in plan order.
+    /// One row per configuration, in plan order: its run, or with several rounds its median run
+    /// (see [`median_runs`]).
     pub results: Vec<RunResult>,
+    /// With several rounds, each row's spread over its rounds (aligned with `results`).
+    pub spreads: Vec<Option<Spread>>,
+    /// Every run, in the order run (`RunResult::round` says which round).
+    pub runs: Vec<RunResult>,
     /// Load averages (1, 5, 15 min) before the first run and after the last.
     pub load_start: Option<[f64; 3]>,
     /// See `load_start`.
@@ -828,19 +888,35 @@ pub fn markdown(out: &ScaleOutput) -> String {
             ""
         }
     );
+    let rounds = out.spreads.iter().flatten().map(|sp| sp.runs).max();
+    if let Some(k) = rounds {
+        let _ = writeln!(
+            s,
+            "Each configuration was run {k} times: the whole plan once per round, one round after \
+             another, so that a drift of the machine reaches every configuration alike. Each row is \
+             the run with the median step p50 of its {k} (the lower of the middle two for an even \
+             count: a real run, whose columns belong together); the targets read those rows; the \
+             spread column gives the least and greatest step p50 and p99 over the {k} runs; \
+             `scale.csv` holds every run with its round.\n"
+        );
+    }
     let _ = writeln!(
         s,
         "Load average (1/5/15 min): {} at start, {} at end; {} runs in {:.0} s.\n",
         fmt_load(out.load_start),
         fmt_load(out.load_end),
-        out.results.len(),
+        out.runs.len().max(out.results.len()),
         out.wall_s
     );
     let names = phase_names(&out.results);
     let _ = write!(
         s,
-        "| N | mode | threads | broad phase | warm-up + frames | step p50 (ms) | step p99 (ms) | previous engine p50 / p99 (ms) | phases p50 (ms) |"
+        "| N | mode | threads | broad phase | warm-up + frames | step p50 (ms) | step p99 (ms) |"
     );
+    if let Some(k) = rounds {
+        let _ = write!(s, " {k} runs: p50 / p99 least-greatest (ms) |");
+    }
+    let _ = write!(s, " previous engine p50 / p99 (ms) | phases p50 (ms) |");
     for k in &names {
         let _ = write!(s, " {k} |");
     }
@@ -849,11 +925,14 @@ pub fn markdown(out: &ScaleOutput) -> String {
         " step ns/body | broad ns/body | peak RSS (MiB) | foveal exact | foveal pairs/frame | candidates/frame | deemed/frame | stale frames | stale regions | stale pairs/frame |"
     );
     let _ = write!(s, "|---|---|---|---|---|---|---|---|---|");
+    if rounds.is_some() {
+        s.push_str("---|");
+    }
     for _ in &names {
         let _ = write!(s, "---|");
     }
     let _ = writeln!(s, "---|---|---|---|---|---|---|---|---|---|");
-    for r in &out.results {
+    for (i, r) in out.results.iter().enumerate() {
         let previous = match out.baseline_of(&r.spec) {
             Some(b) if b.spec == r.spec => "(this run)".to_string(),
             Some(b) => format!("{:.2} / {:.2}", b.step_p50_ms, b.step_p99_ms),
@@ -861,7 +940,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
         };
         let _ = write!(
             s,
-            "| {} | {} | {} | {} | {} + {} | {:.2} | {:.2} | {} | {:.2} |",
+            "| {} | {} | {} | {} | {} + {} | {:.2} | {:.2} |",
             grouped(r.spec.n),
             r.spec.mode.label(),
             r.spec.threads,
@@ -870,9 +949,20 @@ pub fn markdown(out: &ScaleOutput) -> String {
             r.spec.frames,
             r.step_p50_ms,
             r.step_p99_ms,
-            previous,
-            r.phases_p50_ms
         );
+        if rounds.is_some() {
+            match out.spreads.get(i).copied().flatten() {
+                Some(sp) => {
+                    let _ = write!(
+                        s,
+                        " {:.2}-{:.2} / {:.2}-{:.2} |",
+                        sp.p50[0], sp.p50[1], sp.p99[0], sp.p99[1]
+                    );
+                }
+                None => s.push_str(" – |"),
+            }
+        }
+        let _ = write!(s, " {} | {:.2} |", previous, r.phases_p50_ms);
         for k in &names {
             match r.phase_share.iter().find(|(name, _)| name == k) {
                 Some((_, share)) => {
@@ -932,7 +1022,7 @@ pub fn csv(results: &[RunResult]) -> String {
     s.push_str(
         ",step_ns_per_body,broad_ns_per_body,peak_rss_kib,foveal_exact_share,foveal_pairs_mean,\
          candidates_mean,deemed_mean,sphere_tests_mean,setup_s,warmup_s,load1_start,scheduler,\
-         stale_share,stale_regions_mean,regions,stale_pairs_mean\n",
+         stale_share,stale_regions_mean,regions,stale_pairs_mean,round\n",
     );
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
     for r in results {
@@ -964,7 +1054,7 @@ pub fn csv(results: &[RunResult]) -> String {
         }
         let _ = writeln!(
             s,
-            ",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            ",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.step_ns_per_body,
             r.broad_ns_per_body,
             r.peak_rss_kib,
@@ -980,7 +1070,8 @@ pub fn csv(results: &[RunResult]) -> String {
             r.stale_share,
             r.stale_regions_mean,
             r.regions,
-            r.stale_pairs_mean
+            r.stale_pairs_mean,
+            r.round
         );
     }
     s
@@ -998,14 +1089,17 @@ pub fn run(cfg: &ScaleConfig, exe: &Path, progress: bool) -> Result<ScaleOutput,
         ..ScaleOutput::default()
     };
     let plan = cfg.plan();
-    for (i, spec) in plan.iter().enumerate() {
+    let total = plan.len() * cfg.repeat as usize;
+    let rounds = (1..=cfg.repeat).flat_map(|round| plan.iter().map(move |spec| (round, spec)));
+    for (i, (round, spec)) in rounds.enumerate() {
         let t = Instant::now();
-        let r = run_child(exe, spec)?;
+        let mut r = run_child(exe, spec)?;
+        r.round = round;
         if progress {
             eprintln!(
                 "[{}/{}] N={} {} threads={} broad={}: step p50 {:.2} ms, p99 {:.2} ms, RSS {:.0} MiB ({:.0} s)",
                 i + 1,
-                plan.len(),
+                total,
                 spec.n,
                 spec.mode.label(),
                 spec.threads,
@@ -1016,12 +1110,13 @@ pub fn run(cfg: &ScaleConfig, exe: &Path, progress: bool) -> Result<ScaleOutput,
                 t.elapsed().as_secs_f64()
             );
         }
-        out.results.push(r);
+        out.runs.push(r);
     }
     out.load_end = load_average();
     out.wall_s = started.elapsed().as_secs_f64();
+    (out.results, out.spreads) = median_runs(plan.len(), &out.runs);
     let csv_path = cfg.out.join("scale.csv");
-    std::fs::write(&csv_path, csv(&out.results)).map_err(|e| ScaleError::io(&csv_path, e))?;
+    std::fs::write(&csv_path, csv(&out.runs)).map_err(|e| ScaleError::io(&csv_path, e))?;
     let md_path = cfg.out.join("scale.md");
     let md = format!("# foveal-bench scale\n\n{}", markdown(&out));
     std::fs::write(&md_path, md).map_err(|e| ScaleError::io(&md_path, e))?;
@@ -1059,6 +1154,77 @@ mod tests {
         }
     }
 
+    /// A result of `spec` whose step p50 and p99 are `p50` and `p99`.
+    fn result(spec: &RunSpec, p50: f64, p99: f64, round: u32) -> RunResult {
+        RunResult {
+            spec: spec.clone(),
+            step_p50_ms: p50,
+            step_p99_ms: p99,
+            step_mean_ms: p50,
+            step_max_ms: p99,
+            phases_p50_ms: p50,
+            phase_share: Vec::new(),
+            step_ns_per_body: 0.0,
+            broad_ns_per_body: 0.0,
+            peak_rss_kib: 0,
+            foveal_exact_share: 1.0,
+            stale_share: 0.0,
+            stale_regions_mean: 0.0,
+            regions: 0,
+            stale_pairs_mean: 0.0,
+            foveal_pairs_mean: 0.0,
+            candidates_mean: 0.0,
+            deemed_mean: 0.0,
+            sphere_tests_mean: 0.0,
+            setup_s: 0.0,
+            warmup_s: 0.0,
+            load1_start: None,
+            round,
+        }
+    }
+
+    /// Each configuration's row is its run with the median p50, whole (its p99 is that run's,
+    /// not the median p99), the lower middle one for an even count; the spread covers every run
+    /// of the configuration and no other's; one round has no spread.
+    #[test]
+    fn repeated_runs_give_each_configuration_its_median_run() {
+        let plan = ScaleConfig {
+            ns: vec![1_000],
+            threads: vec![1],
+            ..ScaleConfig::default()
+        }
+        .plan();
+        assert_eq!(plan.len(), 2, "exact and budgeted");
+        let (a, b) = (&plan[0], &plan[1]);
+        // Three rounds: a's p50 3, 1, 2 (median 2, from round 3, p99 9); b's 10, 30, 20.
+        let runs = vec![
+            result(a, 3.0, 4.0, 1),
+            result(b, 10.0, 11.0, 1),
+            result(a, 1.0, 50.0, 2),
+            result(b, 30.0, 31.0, 2),
+            result(a, 2.0, 9.0, 3),
+            result(b, 20.0, 21.0, 3),
+        ];
+        let (rows, spreads) = median_runs(plan.len(), &runs);
+        assert_eq!(rows.len(), 2);
+        assert_eq!(
+            (rows[0].spec.clone(), rows[0].step_p50_ms),
+            (a.clone(), 2.0)
+        );
+        assert_eq!((rows[0].step_p99_ms, rows[0].round), (9.0, 3));
+        assert_eq!((rows[1].step_p50_ms, rows[1].round), (20.0, 3));
+        let expect = |p50, p99| Some(Spread { runs: 3, p50, p99 });
+        assert_eq!(spreads[0], expect([1.0, 3.0], [4.0, 50.0]));
+        assert_eq!(spreads[1], expect([10.0, 30.0], [11.0, 31.0]));
+        // Two rounds: the lower of the two.
+        let (rows, _) = median_runs(plan.len(), &runs[..4]);
+        assert_eq!((rows[0].step_p50_ms, rows[1].step_p50_ms), (1.0, 10.0));
+        // One round: the runs themselves, no spread.
+        let (rows, spreads) = median_runs(plan.len(), &runs[..2]);
+        assert_eq!(rows, runs[..2].to_vec());
+        assert_eq!(spreads, vec![None, None]);
+    }
+
     #[test]
     fn plan_and_validation() {
         let cfg = ScaleConfig::default();
@@ -1091,6 +1257,16 @@ mod tests {
             ..ScaleConfig::default()
         };
         assert!(matches!(bad.validate(), Err(ScaleError::Config(_))));
+        for repeat in [0, MAX_REPEAT + 1] {
+            let bad = ScaleConfig {
+                repeat,
+                ..ScaleConfig::default()
+            };
+            match bad.validate() {
+                Err(ScaleError::Invalid(m)) => assert!(m.contains("repeat"), "{m}"),
+                other => panic!("repeat {repeat}: {other:?}"),
+            }
+        }
         assert_eq!(grouped(1_000_000), "1,000,000");
         assert_eq!(grouped(999), "999");
     }

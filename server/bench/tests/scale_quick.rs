@@ -53,3 +53,44 @@ fn quick_protocol_gives_a_row_per_configuration() {
     }
     let _ = std::fs::remove_dir_all(&out_dir);
 }
+
+/// With two rounds every configuration runs twice, round after round: one row each (its median
+/// run), its spread in the table, and every run with its round in the CSV.
+#[test]
+fn repeated_rounds_report_each_configuration_once_with_its_spread() {
+    let out_dir =
+        std::env::temp_dir().join(format!("foveal-bench-scale-rounds-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out_dir);
+    let cfg = ScaleConfig {
+        ns: vec![2_000],
+        threads: vec![1],
+        frames: Some(3),
+        warmup: Some(1),
+        quick: true,
+        repeat: 2,
+        out: out_dir.clone(),
+        ..ScaleConfig::default()
+    };
+    let exe = PathBuf::from(env!("CARGO_BIN_EXE_foveal-bench"));
+    let out = run(&cfg, &exe, false).expect("scale run");
+    let plan = cfg.plan();
+    assert_eq!(out.results.len(), plan.len());
+    assert_eq!(out.runs.len(), 2 * plan.len());
+    let rounds: Vec<u32> = out.runs.iter().map(|r| r.round).collect();
+    assert_eq!(rounds, [1, 1, 2, 2]);
+    for ((row, spec), spread) in out.results.iter().zip(&plan).zip(&out.spreads) {
+        assert_eq!(&row.spec, spec);
+        let spread = spread.expect("two runs: a spread");
+        assert_eq!(spread.runs, 2);
+        assert!(spread.p50[0] <= row.step_p50_ms && row.step_p50_ms <= spread.p50[1]);
+        // The lower of two is the row.
+        assert_eq!(row.step_p50_ms, spread.p50[0]);
+    }
+    let md = markdown(&out);
+    assert!(md.contains("2 runs: p50 / p99 least-greatest (ms)"), "{md}");
+    assert_eq!(md.lines().filter(|l| l.starts_with("| 2,000 |")).count(), 2);
+    let table = std::fs::read_to_string(out_dir.join("scale.csv")).expect("scale.csv");
+    assert_eq!(table.lines().count(), 5, "{table}");
+    assert!(table.lines().next().is_some_and(|h| h.ends_with(",round")));
+    let _ = std::fs::remove_dir_all(&out_dir);
+}
