@@ -61,6 +61,9 @@ pub struct Collider {
     /// The last frame's foveal pairs, when its foveal pass selected exactly the pairs the
     /// metrics count as foveal and settled every one (see [`Self::foveal_known`]).
     foveal_known: Option<u32>,
+    /// The narrow phase's selection marks are this frame's foveal pass's test of the metrics'
+    /// fovea (see [`Self::foveal_marked`]).
+    foveal_marked: bool,
 }
 
 /// A wall-clock frame orders its work only if the expected cost of ordering is at most this
@@ -187,6 +190,7 @@ impl Collider {
             ordering_cost: CostGate::default(),
             foveal_pass: None,
             foveal_known: None,
+            foveal_marked: false,
             config: config.clone(),
         })
     }
@@ -223,6 +227,13 @@ impl Collider {
     /// short by the budget, or used a wider fovea.
     pub fn foveal_known(&self) -> Option<u32> {
         self.foveal_known
+    }
+
+    /// Whether this frame's foveal pass, cut or not, tested exactly the metrics' fovea (its
+    /// radius not widened by the fixation's uncertainty), so that the narrow phase's selection
+    /// marks say which pairs of the prefix it found inside it.
+    pub fn foveal_marked(&self) -> bool {
+        self.foveal_marked
     }
 
     /// Renumber the bodies in what is kept between frames (old id `i` becomes `new_of_old[i]`):
@@ -300,6 +311,7 @@ impl Collider {
         self.narrow.reset(input.candidates);
         self.foveal_pass = None;
         self.foveal_known = None;
+        self.foveal_marked = false;
         let fixation_px = fixation.map(|f| {
             let f = f.clamped();
             input.viewer.to_pixels(f.x, f.y)
@@ -367,6 +379,7 @@ impl Collider {
             // prefix within FOVEAL_DEG of the same point, the same test when the radius is not
             // widened by uncertainty.
             self.foveal_known = (!cut && radius == FOVEAL_DEG).then_some(settled);
+            self.foveal_marked = radius == FOVEAL_DEG;
             // At large N round-robin spends the rest (the regions are the gaze order); over every
             // candidate, the ordering below does.
             if !whole_fovea {

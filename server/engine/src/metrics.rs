@@ -17,7 +17,7 @@
 use crate::budget::Clock;
 use crate::fixation::FrameView;
 use crate::math::Vec3;
-use crate::narrow_phase::{NarrowPhase, PairState, PairStatus};
+use crate::narrow_phase::{MARK_IN, MARK_OUT, NarrowPhase, PairState, PairStatus};
 use crate::perception::Viewer;
 use crate::sphere_tree::SphereTree;
 use crate::world::World;
@@ -181,6 +181,10 @@ pub struct Effort {
     /// The foveal pairs, all settled, when the frame's foveal pass already tested exactly the
     /// metrics' fovea over the same pairs (see `Collider::foveal_known`): not tested again.
     pub foveal_known: Option<u32>,
+    /// The narrow phase's selection marks ([`NarrowPhase::selection_marks`]) are the frame's
+    /// foveal pass's test of exactly the metrics' fovea: a pass cut by its budget still tested
+    /// most of the foveal prefix, and the pairs it marked are not tested again.
+    pub foveal_marked: bool,
 }
 
 impl Default for Effort {
@@ -189,6 +193,7 @@ impl Default for Effort {
             sample_limit: EXACT_LIMIT,
             fovea_pairs: usize::MAX,
             foveal_known: None,
+            foveal_marked: false,
         }
     }
 }
@@ -251,9 +256,15 @@ pub fn measure_within(
     // bodies, per pair: a pass over a million bodies for a few pairs cost a shed frame 7 ms.
     // A fovea already counted is not tested again.
     let fovea = fovea.filter(|_| effort.foveal_known.is_none());
+    let marks = if effort.foveal_marked {
+        np.selection_marks()
+    } else {
+        &[]
+    };
     let fovea_end = effort.fovea_pairs.min(n);
+    // Nor where the foveal pass marked what it tested: the marks cover most of the pairs.
     let near: Option<Vec<bool>> = fovea
-        .filter(|_| fovea_end == n && 4 * n >= world.len())
+        .filter(|_| fovea_end == n && 4 * n >= world.len() && marks.is_empty())
         .map(|f| near_bodies(f, &world.position, centre_reach, threads));
     let count = |lo: usize, hi: usize| -> Counts {
         let mut c = Counts::default();
@@ -288,19 +299,33 @@ pub fn measure_within(
                 let tested = &pairs[lo..hi.min(fovea_end)];
                 if fovea_end < n {
                     // A shed frame's prefix: the pairs of the regions that may hold foveal
-                    // pairs, about half of them foveal. Every centre is tested, without a
-                    // branch on the outcome.
-                    for p in tested {
-                        let inside = f.contains_point(mid(p));
+                    // pairs, about half of them foveal. Every centre the foveal pass did not
+                    // test is tested, without a branch on the outcome (the marked ones lie in
+                    // long runs: the pass stops near the end of each of its runs, if at all).
+                    let marks = marks.get(lo..).unwrap_or_default();
+                    for (k, p) in tested.iter().enumerate() {
+                        let inside = match marks.get(k) {
+                            Some(&MARK_IN) => true,
+                            Some(&MARK_OUT) => false,
+                            _ => f.contains_point(mid(p)),
+                        };
                         c.foveal += u32::from(inside);
                         c.foveal_deemed += u32::from(inside & (p.status == PairStatus::Deemed));
                     }
                 } else {
-                    // Every pair of a frame with few pairs for its bodies: the filter per pair.
-                    for p in tested {
-                        if f.may_contain_ball(pos[p.a as usize], centre_reach)
-                            && f.contains_point(mid(p))
-                        {
+                    // Every pair of a frame with few pairs for its bodies: the filter per pair,
+                    // where the foveal pass did not test it.
+                    let marks = marks.get(lo..).unwrap_or_default();
+                    for (k, p) in tested.iter().enumerate() {
+                        let inside = match marks.get(k) {
+                            Some(&MARK_IN) => true,
+                            Some(&MARK_OUT) => false,
+                            _ => {
+                                f.may_contain_ball(pos[p.a as usize], centre_reach)
+                                    && f.contains_point(mid(p))
+                            }
+                        };
+                        if inside {
                             c.foveal += 1;
                             c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
                         }
@@ -654,6 +679,7 @@ mod tests {
                 sample_limit: limit,
                 fovea_pairs: prefix,
                 foveal_known: None,
+                foveal_marked: false,
             };
             let on = |threads, clock: Option<&dyn Clock>| {
                 measure_within(
@@ -819,6 +845,119 @@ mod tests {
         assert_eq!(
             measure(&some, &tree, &world, None, Some(&fovea), 1).foveal,
             brute
+        );
+    }
+
+    /// A foveal pass cut by its budget marks the pairs of the prefix it tested; the metrics take
+    /// those marks and test only the rest: the same foveal and foveal deemed counts as testing
+    /// every pair, on one and two threads. Marks that say otherwise are believed (they are read,
+    /// not tested again), and ignored when the effort does not vouch for them.
+    #[test]
+    fn a_cut_foveal_pass_marks_what_it_tested_and_the_counts_stay_exact() {
+        let (world, tree, viewer, mut np) = first_frame(20_000, 5);
+        let candidates: Vec<(u32, u32)> = np.pairs.iter().map(|p| (p.a, p.b)).collect();
+        let view = view_at(&viewer, 0.45, 0.55);
+        let fovea = Fovea::new(&viewer, view.fixation_px, 5.0);
+        let pos = &world.position;
+        let inside =
+            |p: &PairState| fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5);
+        let effort = |marked, prefix| Effort {
+            sample_limit: 1_000,
+            fovea_pairs: prefix,
+            foveal_known: None,
+            foveal_marked: marked,
+        };
+        // A prefix of the pairs (a shed frame's foveal regions), and every pair (every region
+        // searched may hold foveal pairs).
+        for (prefix, threads) in [
+            (np.pairs.len() * 3 / 4, 1),
+            (np.pairs.len() * 3 / 4, 2),
+            (np.pairs.len(), 2),
+        ] {
+            np.reset(&candidates);
+            let mut calls = 0;
+            np.resolve_selected(&tree, &world, prefix, threads, &inside, &mut |_| {
+                calls += 1;
+                calls <= 60
+            });
+            np.deem_open();
+            let marks = np.selection_marks().to_vec();
+            let count = |m: u8| marks.iter().filter(|&&k| k == m).count();
+            let (unseen, out, within) = (
+                count(crate::narrow_phase::MARK_UNSEEN),
+                count(MARK_OUT),
+                count(MARK_IN),
+            );
+            assert!(
+                unseen > 0 && out > 0 && within > 0,
+                "{unseen} {out} {within}"
+            );
+            let brute = |end: usize| {
+                let foveal = np.pairs[..end].iter().filter(|p| inside(p));
+                let all = foveal.clone().count() as u32;
+                let deemed = foveal.filter(|p| p.status == PairStatus::Deemed).count() as u32;
+                (all, deemed)
+            };
+            assert!(brute(prefix).1 > 0, "some foveal pairs deemed");
+            for (marked, t) in [(true, threads), (false, threads), (true, 3 - threads)] {
+                let m = measure_within(
+                    &np,
+                    &tree,
+                    &world,
+                    None,
+                    Some(&fovea),
+                    t,
+                    effort(marked, prefix),
+                    None,
+                );
+                assert_eq!(
+                    (m.foveal, m.foveal_deemed),
+                    brute(prefix),
+                    "{threads} {marked} {t}"
+                );
+            }
+        }
+        // Marks of another selection (every pair it reached) are believed where set.
+        let prefix = np.pairs.len() * 3 / 4;
+        np.reset(&candidates);
+        let mut calls = 0;
+        np.resolve_selected(&tree, &world, prefix, 1, &|_| true, &mut |_| {
+            calls += 1;
+            calls <= 500
+        });
+        let reached = np
+            .selection_marks()
+            .iter()
+            .filter(|&&k| k == MARK_IN)
+            .count();
+        let rest = np.pairs[reached..prefix]
+            .iter()
+            .filter(|p| inside(p))
+            .count();
+        let m = measure_within(
+            &np,
+            &tree,
+            &world,
+            None,
+            Some(&fovea),
+            1,
+            effort(true, prefix),
+            None,
+        );
+        assert_eq!(m.foveal as usize, reached + rest);
+        let m = measure_within(
+            &np,
+            &tree,
+            &world,
+            None,
+            Some(&fovea),
+            1,
+            effort(false, prefix),
+            None,
+        );
+        assert_eq!(
+            m.foveal,
+            np.pairs[..prefix].iter().filter(|p| inside(p)).count() as u32
         );
     }
 

@@ -271,7 +271,17 @@ pub struct NarrowPhase {
     pub tests: u64,
     /// Fewest pairs [`Self::resolve_selected`] splits over threads (tests lower it).
     parallel_min: Option<usize>,
+    /// What the last [`Self::resolve_selected`] of this frame found of each pair of its prefix:
+    /// [`MARK_UNSEEN`], [`MARK_OUT`] or [`MARK_IN`] (empty after a reset).
+    marks: Vec<u8>,
 }
+
+/// A pair of [`NarrowPhase::selection_marks`] that the selection did not reach.
+pub const MARK_UNSEEN: u8 = 0;
+/// A pair the selection tested and did not select.
+pub const MARK_OUT: u8 = 1;
+/// A pair the selection selected.
+pub const MARK_IN: u8 = 2;
 
 impl NarrowPhase {
     /// Read every buffer back into cache (see [`crate::warm`]).
@@ -301,6 +311,14 @@ impl NarrowPhase {
         self.arena.clear();
         self.frames_live = false;
         self.tests = 0;
+        self.marks.clear();
+    }
+
+    /// Per pair of the last [`Self::resolve_selected`]'s prefix this frame, what its selection
+    /// found ([`MARK_UNSEEN`] where it stopped before the pair): a pass cut by its budget tells
+    /// what it tested, so that the same test is not made again (the metrics' fovea count).
+    pub fn selection_marks(&self) -> &[u8] {
+        &self.marks
     }
 
     /// Keep, for each body, one pair it was resolved colliding with this frame and the leaf pair
@@ -523,11 +541,23 @@ impl NarrowPhase {
             threads.clamp(1, 64)
         };
         let fresh = |p: &PairState| p.status == PairStatus::Untested;
+        self.marks.clear();
+        self.marks.resize(n, MARK_UNSEEN);
+        // A pair already settled is not tested (it stays unseen); a fresh one is marked by what
+        // the selection says, whether or not the budget then lets it be resolved.
+        let mark = |p: &PairState, m: &mut u8| {
+            if !fresh(p) {
+                return false;
+            }
+            let take = select(p);
+            *m = if take { MARK_IN } else { MARK_OUT };
+            take
+        };
         if parts == 1 {
             let mut settled = 0;
             for i in 0..n {
                 let p = self.pairs[i];
-                if !fresh(&p) || !select(&p) {
+                if !mark(&p, &mut self.marks[i]) {
                     continue;
                 }
                 if !go_on(self.tests) {
@@ -543,8 +573,11 @@ impl NarrowPhase {
         self.lane_scratch.resize_with(parts - 1, Default::default);
         let witness = &self.witness;
         let mut first_arena = std::mem::take(&mut self.arena);
-        let runs: Vec<Mutex<&mut [PairState]>> =
-            self.pairs[..n].chunks_mut(size).map(Mutex::new).collect();
+        let runs: Vec<Mutex<(&mut [PairState], &mut [u8])>> = self.pairs[..n]
+            .chunks_mut(size)
+            .zip(self.marks.chunks_mut(size))
+            .map(Mutex::new)
+            .collect();
         let next = AtomicUsize::new(0);
         let stop = std::sync::atomic::AtomicBool::new(false);
         let finished = AtomicUsize::new(0);
@@ -559,9 +592,10 @@ impl NarrowPhase {
                 let mut guard = run
                     .lock()
                     .unwrap_or_else(std::sync::PoisonError::into_inner);
+                let (pairs, marks) = &mut *guard;
                 let mut slot = [PairFrame::IDENTITY];
                 let mut lane = Lane {
-                    pairs: &mut guard,
+                    pairs,
                     frames: &mut slot,
                     one_frame: true,
                     arena: &mut *arena,
@@ -571,7 +605,7 @@ impl NarrowPhase {
                 };
                 for i in 0..lane.pairs.len() {
                     let p = lane.pairs[i];
-                    if !fresh(&p) || !select(&p) {
+                    if !mark(&p, &mut marks[i]) {
                         continue;
                     }
                     if !check(*lane.tests) {

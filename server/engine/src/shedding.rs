@@ -224,6 +224,7 @@ impl Shedder {
             sample_limit: sample.clamp(MIN_SAMPLE, crate::metrics::EXACT_LIMIT),
             fovea_pairs,
             foveal_known: None,
+            foveal_marked: false,
         }
     }
 

@@ -329,6 +329,7 @@ impl Simulation {
         let effort = match deadline {
             Some((_, ns)) => crate::metrics::Effort {
                 foveal_known: self.collider.foveal_known(),
+                foveal_marked: self.collider.foveal_marked(),
                 ..self.shedder.effort(ns, foveal_prefix.unwrap_or(usize::MAX))
             },
             None => crate::metrics::Effort::default(),
