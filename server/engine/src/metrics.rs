@@ -409,6 +409,8 @@ fn histogram_and(pairs: &[PairState], mut also: impl FnMut(&PairState)) -> [[u32
 
 /// Pairs per block of the counts' fovea test (see `measure_within`): small enough to stay in L1.
 const NEAR_BLOCK: usize = 256;
+// A pair's place in its block is kept as a u16.
+const _: () = assert!(NEAR_BLOCK <= 1 << 16);
 
 /// Histogram bins: one per status and resolved level.
 const LEVELS: usize = crate::config::MAX_DEPTH + 1;
@@ -820,6 +822,23 @@ mod tests {
         for threads in [1, 2] {
             let m = measure(&np, &tree, &world, None, Some(&fovea), threads);
             assert_eq!((m.foveal, m.foveal_deemed), (brute, deemed));
+        }
+        // The last run's last block is a partial one: a fovea on the last pair has pairs there.
+        let mid =
+            |p: &PairState| (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
+        let n = np.pairs.len();
+        assert!(n % NEAR_BLOCK != 0);
+        let at_last = Fovea::new(&viewer, viewer.project(mid(&np.pairs[n - 1])), 5.0);
+        let tail = &np.pairs[n - n % NEAR_BLOCK..];
+        assert!(tail.iter().any(|p| at_last.contains_point(mid(p))));
+        let inside = np.pairs.iter().filter(|p| at_last.contains_point(mid(p)));
+        let want = (
+            inside.clone().count() as u32,
+            inside.filter(|p| p.status == PairStatus::Deemed).count() as u32,
+        );
+        for threads in [1, 2] {
+            let m = measure(&np, &tree, &world, None, Some(&at_last), threads);
+            assert_eq!((m.foveal, m.foveal_deemed), want, "{threads} threads");
         }
         // And with fewer pairs than a quarter of the bodies, filtered pair by pair.
         let in_fovea = |p: &&crate::narrow_phase::PairState| {
