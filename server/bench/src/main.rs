@@ -464,8 +464,8 @@ struct ScaleArgs {
     #[arg(long)]
     fovea_first: bool,
     /// Run the whole plan this many times, round after round (1-25), and report each
-    /// configuration's median run with the spread of its runs: a sitting's drift then reaches
-    /// every configuration alike.
+    /// configuration's median run (the slower middle one for an even count) with the spread of
+    /// its runs: a sitting's drift then reaches every configuration alike.
     #[arg(long, default_value_t = 1)]
     repeat: u32,
     /// Output directory (scale.csv, scale.md).

@@ -627,7 +627,8 @@ pub struct Spread {
 
 /// One row per configuration from `runs`, the results of `rounds` whole plans of `plan_len`
 /// configurations, round after round: each configuration's run with the median step p50 (the
-/// lower of the middle two for an even count; a real run, so its columns belong together), and
+/// slower of the middle two for an even count, so that two rounds never report the better run
+/// alone; a real run, so its columns belong together), and
 /// the spread of its runs (None for a single run).
 pub fn median_runs(plan_len: usize, runs: &[RunResult]) -> (Vec<RunResult>, Vec<Option<Spread>>) {
     let mut rows = Vec::with_capacity(plan_len);
@@ -635,7 +636,7 @@ pub fn median_runs(plan_len: usize, runs: &[RunResult]) -> (Vec<RunResult>, Vec<
     for i in 0..plan_len.min(runs.len()) {
         let mut mine: Vec<&RunResult> = runs.iter().skip(i).step_by(plan_len).collect();
         mine.sort_by(|a, b| a.step_p50_ms.total_cmp(&b.step_p50_ms));
-        rows.push(mine[(mine.len() - 1) / 2].clone());
+        rows.push(mine[mine.len() / 2].clone());
         let range = |f: fn(&RunResult) -> f64| {
             let v = mine.iter().map(|r| f(r));
             [
@@ -894,7 +895,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
             s,
             "Each configuration was run {k} times: the whole plan once per round, one round after \
              another, so that a drift of the machine reaches every configuration alike. Each row is \
-             the run with the median step p50 of its {k} (the lower of the middle two for an even \
+             the run with the median step p50 of its {k} (the slower of the middle two for an even \
              count: a real run, whose columns belong together); the targets read those rows; the \
              spread column gives the least and greatest step p50 and p99 over the {k} runs; \
              `scale.csv` holds every run with its round.\n"
@@ -1184,7 +1185,7 @@ mod tests {
     }
 
     /// Each configuration's row is its run with the median p50, whole (its p99 is that run's,
-    /// not the median p99), the lower middle one for an even count; the spread covers every run
+    /// not the median p99), the slower middle one for an even count; the spread covers every run
     /// of the configuration and no other's; one round has no spread.
     #[test]
     fn repeated_runs_give_each_configuration_its_median_run() {
@@ -1216,9 +1217,9 @@ mod tests {
         let expect = |p50, p99| Some(Spread { runs: 3, p50, p99 });
         assert_eq!(spreads[0], expect([1.0, 3.0], [4.0, 50.0]));
         assert_eq!(spreads[1], expect([10.0, 30.0], [11.0, 31.0]));
-        // Two rounds: the lower of the two.
+        // Two rounds: the slower of the two.
         let (rows, _) = median_runs(plan.len(), &runs[..4]);
-        assert_eq!((rows[0].step_p50_ms, rows[1].step_p50_ms), (1.0, 10.0));
+        assert_eq!((rows[0].step_p50_ms, rows[1].step_p50_ms), (3.0, 30.0));
         // One round: the runs themselves, no spread.
         let (rows, spreads) = median_runs(plan.len(), &runs[..2]);
         assert_eq!(rows, runs[..2].to_vec());
