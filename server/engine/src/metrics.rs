@@ -886,6 +886,12 @@ mod tests {
             foveal_known: None,
             foveal_marked: marked,
         };
+        // (foveal, foveal deemed) as the metrics count them.
+        let counts = |np: &NarrowPhase, threads, marked, prefix| {
+            let effort = effort(marked, prefix);
+            let m = measure_within(np, &tree, &world, None, Some(&fovea), threads, effort, None);
+            (m.foveal, m.foveal_deemed)
+        };
         // A prefix of the pairs (a shed frame's foveal regions), and every pair (every region
         // searched may hold foveal pairs).
         for (prefix, threads) in [
@@ -919,21 +925,8 @@ mod tests {
             };
             assert!(brute(prefix).1 > 0, "some foveal pairs deemed");
             for (marked, t) in [(true, threads), (false, threads), (true, 3 - threads)] {
-                let m = measure_within(
-                    &np,
-                    &tree,
-                    &world,
-                    None,
-                    Some(&fovea),
-                    t,
-                    effort(marked, prefix),
-                    None,
-                );
-                assert_eq!(
-                    (m.foveal, m.foveal_deemed),
-                    brute(prefix),
-                    "{threads} {marked} {t}"
-                );
+                let got = counts(&np, t, marked, prefix);
+                assert_eq!(got, brute(prefix), "{threads} {marked} {t}");
             }
         }
         // Marks of another selection (every pair it reached) are believed where set.
@@ -953,31 +946,9 @@ mod tests {
             .iter()
             .filter(|p| inside(p))
             .count();
-        let m = measure_within(
-            &np,
-            &tree,
-            &world,
-            None,
-            Some(&fovea),
-            1,
-            effort(true, prefix),
-            None,
-        );
-        assert_eq!(m.foveal as usize, reached + rest);
-        let m = measure_within(
-            &np,
-            &tree,
-            &world,
-            None,
-            Some(&fovea),
-            1,
-            effort(false, prefix),
-            None,
-        );
-        assert_eq!(
-            m.foveal,
-            np.pairs[..prefix].iter().filter(|p| inside(p)).count() as u32
-        );
+        assert_eq!(counts(&np, 1, true, prefix).0 as usize, reached + rest);
+        let all = np.pairs[..prefix].iter().filter(|p| inside(p)).count() as u32;
+        assert_eq!(counts(&np, 1, false, prefix).0, all);
     }
 
     #[test]
