@@ -60,11 +60,21 @@ const MAX_CLOCK_STRIDE: u32 = 64;
 /// closely as before.
 const STEP_NS_BOUND: u64 = 2_000;
 
+/// The time taken as a sphere test's bound when spacing the reads (ns). A step is not always
+/// small: one level of a pair in deep overlap can expand thousands of sphere pairs, so 64 such
+/// steps could run milliseconds past the deadline unread. After a read with `left` ns to go the
+/// meter also reads once `left / TEST_NS_BOUND` more sphere tests are done, whichever comes first:
+/// tests cost 1-5 ns here, so this bound is met with room and only long steps hasten a read.
+const TEST_NS_BOUND: u64 = 8;
+
 /// Checks the budget between narrow-phase steps.
 pub struct Meter<'c> {
     budget: FrameBudget,
     clock: &'c dyn Clock,
     countdown: u32,
+    /// Sphere tests done at the last read, and how many more may be done before the next.
+    tests_at_read: u64,
+    test_allowance: u64,
     exhausted: bool,
     /// The clock's reading when a wall-clock duration started (None for other budgets).
     started: Option<u64>,
@@ -93,6 +103,8 @@ impl<'c> Meter<'c> {
             budget,
             clock,
             countdown: 0,
+            tests_at_read: 0,
+            test_allowance: 0,
             exhausted: false,
             started,
         }
@@ -108,14 +120,19 @@ impl<'c> Meter<'c> {
             FrameBudget::Unlimited => false,
             FrameBudget::Tests(max) => tests >= max,
             FrameBudget::Deadline(t) | FrameBudget::Wall(t) => {
-                if self.countdown == 0 {
+                // Callers pass their frame's running count (0 for work without tests).
+                let since = tests.saturating_sub(self.tests_at_read);
+                if self.countdown == 0 || since >= self.test_allowance {
                     // Why spaced by the time left: read every 8 steps, a 4 ms frame at 10,000
                     // bodies read the clock 5,000-6,000 times, about 3% of the frame, time the
                     // sphere tests did not get; only the end of the budget needs close reads.
                     let now = self.clock.now_ns();
-                    let steps = t.saturating_sub(now) / STEP_NS_BOUND;
+                    let left = t.saturating_sub(now);
+                    let steps = left / STEP_NS_BOUND;
                     self.countdown =
                         steps.clamp(u64::from(CLOCK_STRIDE), u64::from(MAX_CLOCK_STRIDE)) as u32;
+                    self.tests_at_read = tests;
+                    self.test_allowance = (left / TEST_NS_BOUND).max(1);
                     now >= t
                 } else {
                     self.countdown -= 1;
@@ -233,6 +250,39 @@ mod tests {
             clock.0.set(10_000_000);
             assert_eq!(calls_until_stopped(&mut m), most, "{before} ns before");
         }
+    }
+
+    /// Steps of many sphere tests (a pair in deep overlap) hasten the reads: far from the
+    /// deadline the meter reads once the tests done since its last read could have used the time
+    /// left, however few the steps; calls without tests keep the step spacing.
+    #[test]
+    fn long_steps_are_read_by_their_sphere_tests() {
+        let clock = Manual(Cell::new(0));
+        // 10 ms to go, then steps of 100,000 tests each (about 0.1-0.5 ms at 1-5 ns a test).
+        let mut m = Meter::new(FrameBudget::Deadline(10_000_000), &clock);
+        assert!(!m.exhausted(0));
+        let allowance = 10_000_000 / TEST_NS_BOUND;
+        assert_eq!(m.test_allowance, allowance);
+        let mut tests = 0;
+        let mut calls = 0;
+        while tests < allowance {
+            tests += 100_000;
+            calls += 1;
+            assert!(!m.exhausted(tests));
+        }
+        // Read at the call that reached the allowance, far sooner than MAX_CLOCK_STRIDE steps.
+        assert!(calls < MAX_CLOCK_STRIDE as usize);
+        assert_eq!(m.tests_at_read, tests);
+        // The deadline passes during a long step: noticed at the next call whose tests reach
+        // the allowance of the last read (here the next one), not 64 steps later.
+        clock.0.set(10_000_000);
+        assert!(m.exhausted(tests + m.test_allowance));
+        // Without tests (prioritisation), the step spacing alone.
+        let mut m = Meter::new(FrameBudget::Deadline(10_000_000), &clock);
+        clock.0.set(0);
+        assert!(!m.exhausted(0));
+        clock.0.set(10_000_000);
+        assert_eq!(calls_until_stopped(&mut m), MAX_CLOCK_STRIDE as usize);
     }
 
     #[test]
