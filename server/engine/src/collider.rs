@@ -309,6 +309,9 @@ impl Collider {
     ) {
         let t0 = clock.now_ns();
         self.narrow.reset(input.candidates);
+        if budget != FrameBudget::Unlimited {
+            self.narrow.make_room_for_frames();
+        }
         self.foveal_pass = None;
         self.foveal_known = None;
         self.foveal_marked = false;
