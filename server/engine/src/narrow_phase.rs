@@ -1180,16 +1180,7 @@ mod tests {
     #[test]
     fn resolving_in_one_go_equals_stepping() {
         for (depth, seed) in [(3, 5), (4, 1), (5, 2)] {
-            let cfg = SceneConfig::paper(1_500, seed);
-            let tree = SphereTree::build(Star::new(cfg.shape_radius), depth).expect("tree");
-            let world = World::generate(&cfg);
-            let mut bp = crate::broad_phase::BroadPhase::new(
-                tree.root_radius(),
-                world.lo,
-                cfg.volume_side(),
-                world.len(),
-            );
-            let pairs = bp.update(&world.position).to_vec();
+            let (tree, world, pairs) = paper_pairs(1_500, seed, depth);
             let (mut stepped, mut whole) = (NarrowPhase::default(), NarrowPhase::default());
             stepped.reset(&pairs);
             whole.reset(&pairs);
@@ -1220,12 +1211,11 @@ mod tests {
         }
     }
 
-    /// A budgeted frame's room for pair frames is made before its work, with headroom, so that
-    /// no step grows it (a growth is a pause no meter between steps can cut short).
-    #[test]
-    fn room_for_frames_is_made_before_the_steps() {
-        let cfg = SceneConfig::paper(300, 2);
-        let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
+    /// The paper scene of `bodies` bodies (seed `seed`): its tree of `depth` levels, world and
+    /// first candidate pairs.
+    fn paper_pairs(bodies: u32, seed: u64, depth: usize) -> (SphereTree, World, Vec<(u32, u32)>) {
+        let cfg = SceneConfig::paper(bodies, seed);
+        let tree = SphereTree::build(Star::new(cfg.shape_radius), depth).expect("tree");
         let world = World::generate(&cfg);
         let mut bp = crate::broad_phase::BroadPhase::new(
             tree.root_radius(),
@@ -1234,6 +1224,14 @@ mod tests {
             world.len(),
         );
         let pairs = bp.update(&world.position).to_vec();
+        (tree, world, pairs)
+    }
+
+    /// A budgeted frame's room for pair frames is made before its work, with headroom, so that
+    /// no step grows it (a growth is a pause no meter between steps can cut short).
+    #[test]
+    fn room_for_frames_is_made_before_the_steps() {
+        let (tree, world, pairs) = paper_pairs(300, 2, 4);
         assert!(pairs.len() > 100);
         let mut np = NarrowPhase::default();
         np.reset(&pairs);
@@ -1330,16 +1328,7 @@ mod tests {
     /// as alone, the others are untouched, and a stop leaves each pair settled or untested.
     #[test]
     fn resolving_a_selection_settles_whole_pairs_on_any_thread_count() {
-        let cfg = SceneConfig::paper(1_500, 4);
-        let tree = SphereTree::build(Star::new(cfg.shape_radius), 4).expect("tree");
-        let world = World::generate(&cfg);
-        let mut bp = crate::broad_phase::BroadPhase::new(
-            tree.root_radius(),
-            world.lo,
-            cfg.volume_side(),
-            world.len(),
-        );
-        let pairs = bp.update(&world.position).to_vec();
+        let (tree, world, pairs) = paper_pairs(1_500, 4, 4);
         let prefix = pairs.len() * 3 / 4;
         let select = |p: &PairState| (p.a + p.b) % 3 != 0;
         let mut alone = NarrowPhase::default();
