@@ -261,6 +261,12 @@ pub fn measure_within(
     } else {
         &[]
     };
+    // What the foveal pass found of pair `i`, where it tested it.
+    let marked = |i: usize| match marks.get(i) {
+        Some(&MARK_IN) => Some(true),
+        Some(&MARK_OUT) => Some(false),
+        _ => None,
+    };
     let fovea_end = effort.fovea_pairs.min(n);
     // Nor where the foveal pass marked what it tested: the marks cover most of the pairs.
     let near: Option<Vec<bool>> = fovea
@@ -302,29 +308,19 @@ pub fn measure_within(
                     // pairs, about half of them foveal. Every centre the foveal pass did not
                     // test is tested, without a branch on the outcome (the marked ones lie in
                     // long runs: the pass stops near the end of each of its runs, if at all).
-                    let marks = marks.get(lo..).unwrap_or_default();
                     for (k, p) in tested.iter().enumerate() {
-                        let inside = match marks.get(k) {
-                            Some(&MARK_IN) => true,
-                            Some(&MARK_OUT) => false,
-                            _ => f.contains_point(mid(p)),
-                        };
+                        let inside = marked(lo + k).unwrap_or_else(|| f.contains_point(mid(p)));
                         c.foveal += u32::from(inside);
                         c.foveal_deemed += u32::from(inside & (p.status == PairStatus::Deemed));
                     }
                 } else {
                     // Every pair of a frame with few pairs for its bodies: the filter per pair,
                     // where the foveal pass did not test it.
-                    let marks = marks.get(lo..).unwrap_or_default();
                     for (k, p) in tested.iter().enumerate() {
-                        let inside = match marks.get(k) {
-                            Some(&MARK_IN) => true,
-                            Some(&MARK_OUT) => false,
-                            _ => {
-                                f.may_contain_ball(pos[p.a as usize], centre_reach)
-                                    && f.contains_point(mid(p))
-                            }
-                        };
+                        let inside = marked(lo + k).unwrap_or_else(|| {
+                            f.may_contain_ball(pos[p.a as usize], centre_reach)
+                                && f.contains_point(mid(p))
+                        });
                         if inside {
                             c.foveal += 1;
                             c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
