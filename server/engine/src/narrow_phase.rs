@@ -406,9 +406,7 @@ impl NarrowPhase {
     /// The whole state as one lane, with a frame stored per pair (pairs may be stepped in any
     /// order).
     fn lane(&mut self) -> Lane<'_> {
-        if self.frames.len() < self.pairs.len() {
-            self.frames.resize(self.pairs.len(), PairFrame::IDENTITY);
-        }
+        self.make_room_for_frames();
         self.frames_live = true;
         Lane {
             pairs: &mut self.pairs,
