@@ -110,6 +110,11 @@ impl<'c> Meter<'c> {
         }
     }
 
+    /// Whether the budget is time (a wall-clock duration or deadline), not sphere tests or none.
+    pub fn counts_time(&self) -> bool {
+        matches!(self.budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_))
+    }
+
     /// Whether work must stop, given the sphere tests done so far. Once true it stays true.
     #[inline]
     pub fn exhausted(&mut self, tests: u64) -> bool {

@@ -237,9 +237,10 @@ impl Collider {
     }
 
     /// Renumber the bodies in what is kept between frames (old id `i` becomes `new_of_old[i]`):
-    /// the narrow phase's witnesses.
+    /// the narrow phase's witnesses are renumbered, what the scheduler remembers is dropped.
     pub fn renumber(&mut self, new_of_old: &[u32]) {
         self.narrow.renumber(new_of_old);
+        self.scheduler.forget();
     }
 
     /// The narrow phase (pair states and test count) of the last frame.
@@ -331,6 +332,7 @@ impl Collider {
             self.narrow
                 .resolve_all(input.tree, input.world, self.config.threads as usize);
             self.narrow.remember_witnesses(input.world.len());
+            self.scheduler.forget();
             profile.prioritise_ns = t1 - t0;
             profile.narrow_ns = clock.now_ns() - t1;
             r.candidate_pairs = self.narrow.pairs.len() as u32;
@@ -395,6 +397,7 @@ impl Collider {
                     calibration: &self.calibration,
                 };
                 self.fallback.run(&mut self.narrow, &work, &mut meter);
+                self.scheduler.forget();
                 let deemed = self.narrow.deem_open();
                 self.narrow.remember_witnesses(input.world.len());
                 profile.prioritise_ns = 0;
@@ -462,6 +465,7 @@ impl Collider {
                 self.ordering_cost.learn(cost);
             }
         } else {
+            self.scheduler.forget();
             // Shed: round-robin, nearest the fixation first where the broad phase has columns
             // to find those pairs by and the scheduler is one that uses gaze (see
             // `schedule::rings`), in candidate order otherwise. The placing costs a few dozen

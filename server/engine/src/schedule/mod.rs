@@ -56,6 +56,9 @@ pub trait Scheduler: std::fmt::Debug + Send {
     }
     /// Read the scheduler's own buffers back into cache (see [`crate::warm`]).
     fn warm(&self) {}
+    /// Drop what the last run carries to the next (a frame this scheduler did not run, or
+    /// bodies renumbered, breaks the chain: what it knew names another frame's state).
+    fn forget(&mut self) {}
 }
 
 /// The scheduler for `kind` (`options` configure [`Priced`] only).
