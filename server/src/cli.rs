@@ -48,8 +48,9 @@ pub struct Cli {
     pub depth: u32,
     /// Narrow-phase scheduler. The default, `priced`, orders work by the false-positive perceived
     /// error a step is expected to remove per sphere test (probabilities and costs calibrated on
-    /// exact runs); on identical frames it reaches 0.72-0.97 of the reduction a clairvoyant
-    /// schedule could make over round-robin under sphere-test budgets. A wall-clock frame too
+    /// exact runs; under a sphere-test budget, a pair's cost last frame where it is remembered);
+    /// on identical frames it reaches 0.81-1.00 of the reduction a clairvoyant schedule could
+    /// make over round-robin under sphere-test budgets. A wall-clock frame too
     /// short to pay for any ordering runs round-robin nearest the fixation first, which leaves
     /// 0.21-0.67x round-robin's perceived error at a tenth of the exact narrow phase at N = 10,000
     /// (docs/BENCHMARKS.md).
