@@ -42,8 +42,9 @@ pub const LIST_BUCKETS: usize = 32;
 const LENGTH_BUCKETS: usize = 16;
 
 /// List key of an untested pair remembered from last frame as settled separate below its root
-/// after `cost` sphere tests: 1 to [`LENGTH_BUCKETS`] - 1, by half-octaves of the cost (2-3,
-/// 4-5, 6-7, 8-11, ... 256 and beyond). Why: an untested pair's cost to settle is otherwise
+/// after `cost` sphere tests: 1 to [`LENGTH_BUCKETS`] - 1, by half-octaves of the cost (2 and
+/// less, 3, 4-5, 6-7, 8-11, ..., 256 and beyond; a pair settled below its root took at least 9
+/// tests, so keys 1-4 do not occur in the paper scene). Why: an untested pair's cost to settle is otherwise
 /// priced by its distance alone, while the same pair's cost last frame predicts this frame's
 /// closely (bodies move little between frames: the logarithms of the two correlate at 0.92 in
 /// the paper scene), and the cost is what a schedule most needs to know (pricing every pair by

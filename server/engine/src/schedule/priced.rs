@@ -78,7 +78,8 @@ impl PricedOptions {
 }
 
 /// How far (in quarter octaves) a pair being worked on may fall below the best waiting pair before
-/// it is put back: 8 is a factor of 4 (0, 2 and 4 measured the same under sphere-test budgets).
+/// it is put back: 1 is a factor of about 1.19 (0, 2 and 4 measured the same under sphere-test
+/// budgets).
 const COMMIT_BUCKETS: usize = 1;
 
 /// Buckets of the queue: f32 exponent and two mantissa bits of a positive value.
@@ -578,8 +579,11 @@ impl Scheduler for Priced {
         // a wall-clock budget they cost more tests than the better order saves: at 10,000
         // bodies and a third of the exact narrow phase, pricing took 393 against 340 us a frame
         // and the tests that followed ran 18% slower (a different mix of steps), for 23% fewer
-        // tests and a worse true P (docs/BENCHMARKS.md); so those frames price as before.
-        if meter.counts_time() {
+        // tests and a worse true P (docs/BENCHMARKS.md); so those frames price by the mean cost
+        // without a memory, the formula before it (on the regenerated table).
+        // The ablations (a part of the price switched off) run without it too: the memory's bins
+        // price by cost and probability, which they are meant to leave out.
+        if meter.counts_time() || !(self.options.probability && self.options.cost) {
             self.memory.forget();
             self.run_with::<false>(np, work, meter);
         } else {
@@ -732,6 +736,37 @@ mod tests {
         priced.forget();
         run_once(&mut priced, &mut np, &sim, exact / 10);
         assert!(priced.remembered.iter().all(|&t| t == 0));
+    }
+
+    #[test]
+    fn wall_clock_runs_keep_no_memory() {
+        let sim = frame();
+        let mut np = NarrowPhase::default();
+        let mut priced = Priced::new(PricedOptions::default());
+        let exact = sim.last_report().sphere_tests;
+        run_once(&mut priced, &mut np, &sim, exact / 10);
+        assert!(priced.memory.bodies() > 0);
+        // A wall-clock frame (a frozen clock: the deadline is never reached) drops it and keeps
+        // nothing for the next.
+        let input = sim.frame_input();
+        let cal = calibration::Calibration::shipped().expect("shipped table");
+        let priorities = super::super::Priorities::default();
+        let work = Work {
+            tree: input.tree,
+            world: input.world,
+            view: None,
+            priorities: &priorities,
+            calibration: &cal,
+        };
+        np.reset(input.candidates);
+        let clock = crate::FrozenClock;
+        let mut meter = Meter::new(crate::FrameBudget::Wall(1_000_000), &clock);
+        priced.run(&mut np, &work, &mut meter);
+        assert_eq!(priced.memory.bodies(), 0);
+        assert!(
+            np.pairs.iter().all(|p| !p.status.is_open()),
+            "an unmet deadline settles all"
+        );
     }
 
     #[test]
