@@ -555,10 +555,9 @@ impl Observations {
                 let near = shrink(&window, row);
                 let (p, gap, cost) = shrink(s, near);
                 let cost = cost.max(1.0);
-                // The horizons' rates from the bin where it is dense, else from the window.
-                let dense = if s.n >= DENSE { s } else { &window };
-                let ahead = if dense.n >= DENSE {
-                    dense.best_ahead()
+                // The horizons' rates from the window (the bin itself where it is dense).
+                let ahead = if window.n >= DENSE {
+                    window.best_ahead()
                 } else {
                     0.0
                 };

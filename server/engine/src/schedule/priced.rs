@@ -661,8 +661,13 @@ mod tests {
         sim
     }
 
-    /// One priced run over `sim`'s candidates under a budget of `tests` sphere tests.
-    fn run_once(priced: &mut Priced, np: &mut NarrowPhase, sim: &crate::Simulation, tests: u64) {
+    /// One priced run over `sim`'s candidates under `budget`, its open pairs then deemed.
+    fn run_once(
+        priced: &mut Priced,
+        np: &mut NarrowPhase,
+        sim: &crate::Simulation,
+        budget: crate::FrameBudget,
+    ) {
         let input = sim.frame_input();
         let cal = calibration::Calibration::shipped().expect("shipped table");
         let priorities = super::super::Priorities::default();
@@ -675,7 +680,7 @@ mod tests {
         };
         np.reset(input.candidates);
         let clock = crate::FrozenClock;
-        let mut meter = Meter::new(crate::FrameBudget::Tests(tests), &clock);
+        let mut meter = Meter::new(budget, &clock);
         priced.run(np, &work, &mut meter);
         np.deem_open();
         np.remember_witnesses(input.world.len());
@@ -712,7 +717,12 @@ mod tests {
         let mut priced = Priced::new(PricedOptions::default());
         // A tenth of the frame's exact cost: the root tests and some of the deeper pairs.
         let exact = sim.last_report().sphere_tests;
-        run_once(&mut priced, &mut np, &sim, exact / 10);
+        run_once(
+            &mut priced,
+            &mut np,
+            &sim,
+            crate::FrameBudget::Tests(exact / 10),
+        );
         let first: Vec<u32> = np
             .pairs
             .iter()
@@ -722,7 +732,12 @@ mod tests {
         assert!(kept > 5, "{kept} pairs remembered");
         // The same frame again: every remembered pair is looked up, and one settled again costs
         // exactly what it cost (the same poses and the same witnesses).
-        run_once(&mut priced, &mut np, &sim, exact / 10);
+        run_once(
+            &mut priced,
+            &mut np,
+            &sim,
+            crate::FrameBudget::Tests(exact / 10),
+        );
         assert_eq!(priced.remembered, first);
         let mut again = 0;
         for (i, p) in np.pairs.iter().enumerate() {
@@ -734,7 +749,12 @@ mod tests {
         assert!(again * 2 > kept, "{again} of {kept} settled again");
         // A frame the scheduler did not order breaks the chain.
         priced.forget();
-        run_once(&mut priced, &mut np, &sim, exact / 10);
+        run_once(
+            &mut priced,
+            &mut np,
+            &sim,
+            crate::FrameBudget::Tests(exact / 10),
+        );
         assert!(priced.remembered.iter().all(|&t| t == 0));
     }
 
@@ -744,24 +764,21 @@ mod tests {
         let mut np = NarrowPhase::default();
         let mut priced = Priced::new(PricedOptions::default());
         let exact = sim.last_report().sphere_tests;
-        run_once(&mut priced, &mut np, &sim, exact / 10);
+        run_once(
+            &mut priced,
+            &mut np,
+            &sim,
+            crate::FrameBudget::Tests(exact / 10),
+        );
         assert!(priced.memory.bodies() > 0);
         // A wall-clock frame (a frozen clock: the deadline is never reached) drops it and keeps
         // nothing for the next.
-        let input = sim.frame_input();
-        let cal = calibration::Calibration::shipped().expect("shipped table");
-        let priorities = super::super::Priorities::default();
-        let work = Work {
-            tree: input.tree,
-            world: input.world,
-            view: None,
-            priorities: &priorities,
-            calibration: &cal,
-        };
-        np.reset(input.candidates);
-        let clock = crate::FrozenClock;
-        let mut meter = Meter::new(crate::FrameBudget::Wall(1_000_000), &clock);
-        priced.run(&mut np, &work, &mut meter);
+        run_once(
+            &mut priced,
+            &mut np,
+            &sim,
+            crate::FrameBudget::Wall(1_000_000),
+        );
         assert_eq!(priced.memory.bodies(), 0);
         assert!(
             np.pairs.iter().all(|p| !p.status.is_open()),
