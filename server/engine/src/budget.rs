@@ -5,8 +5,9 @@
 //! a wall clock itself. Besides the paper's wall-clock budget there is a deterministic budget counted
 //! in sphere tests, so that a run replays bit for bit on any machine.
 
-/// A monotonic clock supplied by the caller.
-pub trait Clock {
+/// A monotonic clock supplied by the caller. It is `Sync` because a frame on several threads runs
+/// on the simulation's thread pool, which reads it from there.
+pub trait Clock: Sync {
     /// Nanoseconds since an arbitrary fixed origin; never decreases.
     fn now_ns(&self) -> u64;
 }
@@ -188,26 +189,26 @@ impl<'c> Meter<'c> {
 /// A clock for tests that advances `.1` nanoseconds at every reading (`.0` holds the last one),
 /// so a frame's timing depends only on how often it reads the clock.
 #[cfg(test)]
-pub(crate) struct Ticking(pub std::cell::Cell<u64>, pub u64);
+pub(crate) struct Ticking(pub std::sync::atomic::AtomicU64, pub u64);
 
 #[cfg(test)]
 impl Clock for Ticking {
     fn now_ns(&self) -> u64 {
-        let t = self.0.get() + self.1;
-        self.0.set(t);
-        t
+        self.0
+            .fetch_add(self.1, std::sync::atomic::Ordering::Relaxed)
+            + self.1
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::cell::Cell;
+    use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
-    struct Manual(Cell<u64>);
+    struct Manual(AtomicU64);
     impl Clock for Manual {
         fn now_ns(&self) -> u64 {
-            self.0.get()
+            self.0.load(Relaxed)
         }
     }
 
@@ -227,7 +228,7 @@ mod tests {
     /// [`CLOCK_STRIDE`] steps.
     #[test]
     fn reads_are_sparse_far_from_the_deadline_and_close_near_it() {
-        let clock = Manual(Cell::new(0));
+        let clock = Manual(AtomicU64::new(0));
         let reads = |m: &mut Meter<'_>, steps: usize| {
             // Steps until the meter next reads: it reads on the call after its countdown ends.
             let mut n = 0;
@@ -242,17 +243,17 @@ mod tests {
         // 10 ms to go: one read per MAX_CLOCK_STRIDE + 1 calls.
         assert_eq!(reads(&mut m, 650), 10);
         // 20 us to go: about one read per 10 calls.
-        clock.0.set(10_000_000 - 20_000);
+        clock.0.store(10_000_000 - 20_000, Relaxed);
         let mut m = Meter::new(FrameBudget::Deadline(10_000_000), &clock);
         assert_eq!(reads(&mut m, 110), 10);
         // Read 20 us before the deadline, then the deadline passes at once (steps far slower
         // than the bound): noticed within the 10 calls that read spaced, and from a read within
         // the last few microseconds, within CLOCK_STRIDE calls.
         for (before, most) in [(20_000, 10), (3_000, CLOCK_STRIDE as usize)] {
-            clock.0.set(10_000_000 - before);
+            clock.0.store(10_000_000 - before, Relaxed);
             let mut m = Meter::new(FrameBudget::Deadline(10_000_000), &clock);
             assert!(!m.exhausted(0));
-            clock.0.set(10_000_000);
+            clock.0.store(10_000_000, Relaxed);
             assert_eq!(calls_until_stopped(&mut m), most, "{before} ns before");
         }
     }
@@ -262,7 +263,7 @@ mod tests {
     /// left, however few the steps; calls without tests keep the step spacing.
     #[test]
     fn long_steps_are_read_by_their_sphere_tests() {
-        let clock = Manual(Cell::new(0));
+        let clock = Manual(AtomicU64::new(0));
         // 10 ms to go, then steps of 100,000 tests each (about 0.1-0.5 ms at 1-5 ns a test).
         let mut m = Meter::new(FrameBudget::Deadline(10_000_000), &clock);
         assert!(!m.exhausted(0));
@@ -280,22 +281,22 @@ mod tests {
         assert_eq!(m.tests_at_read, tests);
         // The deadline passes during a long step: noticed at the next call whose tests reach
         // the allowance of the last read (here the next one), not 64 steps later.
-        clock.0.set(10_000_000);
+        clock.0.store(10_000_000, Relaxed);
         assert!(m.exhausted(tests + m.test_allowance));
         // Without tests (prioritisation), the step spacing alone.
         let mut m = Meter::new(FrameBudget::Deadline(10_000_000), &clock);
-        clock.0.set(0);
+        clock.0.store(0, Relaxed);
         assert!(!m.exhausted(0));
-        clock.0.set(10_000_000);
+        clock.0.store(10_000_000, Relaxed);
         assert_eq!(calls_until_stopped(&mut m), MAX_CLOCK_STRIDE as usize);
     }
 
     #[test]
     fn deadline_is_noticed_within_the_stride() {
-        let clock = Manual(Cell::new(0));
+        let clock = Manual(AtomicU64::new(0));
         let mut m = Meter::new(FrameBudget::Deadline(100), &clock);
         assert!(!m.exhausted(0));
-        clock.0.set(100);
+        clock.0.store(100, Relaxed);
         assert!(calls_until_stopped(&mut m) <= CLOCK_STRIDE as usize);
     }
 

@@ -697,7 +697,6 @@ mod tests {
     use super::*;
     use crate::budget::Ticking;
     use crate::{BudgetSpec, FrozenClock, SchedulerKind, Simulation};
-    use std::cell::Cell;
 
     /// On a clock that advances 1 µs at every read the ordering, a handful of reads, costs far
     /// more than a 2 µs frame can pay.
@@ -710,7 +709,7 @@ mod tests {
         for _ in 0..5 {
             sim.step(None, &FrozenClock);
         }
-        let clock = Ticking(Cell::new(0), 1_000);
+        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 1_000);
         let fixation = Some(Fixation::at(0.5, 0.5));
         for kind in [SchedulerKind::Priced, SchedulerKind::RoundRobin] {
             cfg.scheduler = kind;
@@ -773,7 +772,7 @@ mod tests {
         let mut plain = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
         cfg.fovea_first = true;
         let mut first = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
-        let clock = Ticking(Cell::new(0), 100);
+        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 100);
         let mut shown = 0;
         for budget_us in [5, 20, 50, 100, 200, 400, 800] {
             let budget = FrameBudget::Wall(budget_us * 1_000);
@@ -815,7 +814,7 @@ mod tests {
             sim.step(None, &FrozenClock);
         }
         let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
-        let clock = Ticking(Cell::new(0), 1_000);
+        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 1_000);
         let fixation = Some(Fixation::at(0.5, 0.5));
         let shed: Vec<bool> = (0..LEARN_FRAMES + 2 * (PROBE_EVERY + 1))
             .map(|_| {

@@ -3,8 +3,10 @@
 //! The simulation of O'Sullivan, "A Model of Collision Perception for Real-Time Animation": many
 //! identical star-shaped rigid bodies in a box, a sweep-and-prune broad phase, an interruptible
 //! sphere-tree narrow phase under a per-frame budget, and perceptual scheduling of the narrow phase
-//! around the viewer's fixation. Pure, synchronous and deterministic: no threads, no I/O, and no
-//! clock but the [`Clock`] the caller hands to [`Simulation::step`].
+//! around the viewer's fixation. Pure, synchronous and deterministic: no I/O, no clock but the
+//! [`Clock`] the caller hands to [`Simulation::step`], and threads only inside a step (a frame on
+//! several threads runs on the simulation's own rayon pool and returns when its work is done; no
+//! output depends on the thread count).
 //!
 //! # Layout
 //! - [`config`]: scene, budget, scheduler and model configuration, validated with errors that name

@@ -20,9 +20,10 @@ use crate::math::{LMat3, LVec3, Vec3};
 use crate::sphere_tree::{LANES, SphereTree};
 use crate::world::World;
 
-/// Fewest pairs for which [`NarrowPhase::resolve_all`] splits the work over threads: a thread
-/// costs tens of microseconds to start, which 20,000 pairs (about a millisecond of tests) repay.
-pub const PARALLEL_MIN_PAIRS: usize = 20_000;
+/// Fewest pairs for which [`NarrowPhase::resolve_all`] splits the work over threads: handing
+/// work to a thread of the frame's pool costs a microsecond, or 20-40 µs if it has gone to sleep,
+/// which 4,000 pairs (about 0.3 ms of tests at the paper's density) repay.
+pub const PARALLEL_MIN_PAIRS: usize = 4_000;
 
 /// Runs of pairs per thread that [`NarrowPhase::resolve_all`] hands out, and the fewest pairs in
 /// a run: enough runs that the last ones even out the threads, long enough that taking one costs
@@ -506,23 +507,20 @@ impl NarrowPhase {
             }
             count
         };
-        let tests = std::thread::scope(|s| {
+        let mut counts = vec![0u64; parts];
+        rayon::in_place_scope(|s| {
             let work = &work;
-            let others: Vec<_> = self
+            let (mine, others) = counts.split_at_mut(1);
+            let lanes = self
                 .lane_arenas
                 .iter_mut()
-                .zip(self.lane_scratch.iter_mut())
-                .map(|(arena, scratch)| s.spawn(move || work(arena, scratch)))
-                .collect();
-            let mut tests = work(&mut first_arena, &mut self.scratch);
-            for h in others {
-                match h.join() {
-                    Ok(t) => tests += t,
-                    Err(panic) => std::panic::resume_unwind(panic),
-                }
+                .zip(self.lane_scratch.iter_mut());
+            for ((arena, scratch), count) in lanes.zip(others) {
+                s.spawn(move |_| *count = work(arena, scratch));
             }
-            tests
+            mine[0] = work(&mut first_arena, &mut self.scratch);
         });
+        let tests: u64 = counts.iter().sum();
         drop(runs);
         self.arena = first_arena;
         self.tests += tests;
@@ -591,7 +589,7 @@ impl NarrowPhase {
             .collect();
         let next = AtomicUsize::new(0);
         let stop = std::sync::atomic::AtomicBool::new(false);
-        let finished = AtomicUsize::new(0);
+        let running = AtomicUsize::new(0);
         let tests_before = self.tests;
         // One thread's share: (sphere tests, pairs resolved). `check` is asked before each pair.
         let work = |arena: &mut Vec<[u16; 2]>,
@@ -629,51 +627,45 @@ impl NarrowPhase {
             }
             (count, settled)
         };
-        let (tests, settled) = std::thread::scope(|s| {
+        let mut done = vec![(0u64, 0u32); parts];
+        rayon::in_place_scope(|s| {
             let work = &work;
-            let stop = &stop;
-            let others: Vec<_> = self
+            let (stop, running) = (&stop, &running);
+            let (mine, others) = done.split_at_mut(1);
+            let lanes = self
                 .lane_arenas
                 .iter_mut()
-                .zip(self.lane_scratch.iter_mut())
-                .map(|(arena, scratch)| {
-                    let finished = &finished;
-                    s.spawn(move || {
-                        let done = work(arena, scratch, &mut |_| !stop.load(Ordering::Relaxed));
-                        finished.fetch_add(1, Ordering::Release);
-                        done
-                    })
-                })
-                .collect();
+                .zip(self.lane_scratch.iter_mut());
+            for ((arena, scratch), out) in lanes.zip(others) {
+                s.spawn(move |_| {
+                    running.fetch_add(1, Ordering::AcqRel);
+                    *out = work(arena, scratch, &mut |_| !stop.load(Ordering::Relaxed));
+                    running.fetch_sub(1, Ordering::AcqRel);
+                });
+            }
             // The calling thread alone reads the budget (the clock need not be shared); the
             // tests it is shown are its own plus those done before the pass.
-            let mine = work(&mut first_arena, &mut self.scratch, &mut |t| {
+            mine[0] = work(&mut first_arena, &mut self.scratch, &mut |t| {
                 let more = !stop.load(Ordering::Relaxed) && go_on(tests_before + t);
                 if !more {
                     stop.store(true, Ordering::Relaxed);
                 }
                 more
             });
-            // No run is left to take: watch the budget while the others finish theirs.
-            let workers = others.len();
-            while !stop.load(Ordering::Relaxed) && finished.load(Ordering::Acquire) < workers {
-                if !go_on(tests_before + mine.0) {
+            // No run is left to take: watch the budget while the others finish theirs. A share
+            // not yet started when this looks finds no run when it starts, so only those
+            // running are waited for (waiting for one not started could wait for ever: it may
+            // be this thread that runs it, at the scope's end).
+            while !stop.load(Ordering::Relaxed) && running.load(Ordering::Acquire) > 0 {
+                if !go_on(tests_before + mine[0].0) {
                     stop.store(true, Ordering::Relaxed);
                 }
                 std::hint::spin_loop();
             }
-            let (mut tests, mut settled) = mine;
-            for h in others {
-                match h.join() {
-                    Ok((t, k)) => {
-                        tests += t;
-                        settled += k;
-                    }
-                    Err(panic) => std::panic::resume_unwind(panic),
-                }
-            }
-            (tests, settled)
         });
+        let (tests, settled) = done
+            .iter()
+            .fold((0, 0), |(t, k), &(dt, dk)| (t + dt, k + dk));
         drop(runs);
         self.arena = first_arena;
         self.tests += tests;

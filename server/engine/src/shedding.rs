@@ -376,7 +376,6 @@ mod tests {
     use crate::metrics::Fovea;
     use crate::simulation::Simulation;
     use crate::world::World;
-    use std::cell::Cell;
 
     /// Cheap frames between expensive ones do not wear the estimate down to the cheap frames'
     /// tail: once it has risen to the expensive frames' (at most TAIL_RISE a frame, so after two
@@ -601,13 +600,13 @@ mod tests {
         // Every clock reading costs 500 ns of this clock: the broad phase reads it once per
         // region (784 here), so per-region time is still the larger part of a region's cost.
         let tick = 500;
-        let clock = Ticking(Cell::new(0), tick);
+        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), tick);
         let fixation = Some(Fixation::at(0.5, 0.5));
         let mut shed_frames = 0;
         for _ in 0..12 {
-            let start = clock.0.get();
+            let start = clock.0.load(std::sync::atomic::Ordering::Relaxed);
             let r = sim.step(fixation, &clock).clone();
-            let spent = clock.0.get() - start;
+            let spent = clock.0.load(std::sync::atomic::Ordering::Relaxed) - start;
             // One reading past the deadline at most per phase boundary.
             assert!(spent <= budget_ns + 8 * tick, "frame took {spent} ns");
             assert!(r.regions > 16, "{} regions", r.regions);

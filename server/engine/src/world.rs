@@ -14,10 +14,11 @@ use crate::math::{LMat3, Quat, Vec3};
 use crate::rng::Rng;
 
 /// Below this many bodies [`World::integrate_threads`] runs on the calling thread whatever it is
-/// asked. Integration costs about 17 ns per body on one core and starting a scoped thread 30-70 µs,
-/// so on a 2-core machine a second thread is a wash at 20,000 bodies under load (0.35 ms either
-/// way; 0.24 ms when idle), a loss below that, and halves the time from about 50,000 up.
-pub const PARALLEL_MIN_BODIES: usize = 20_000;
+/// asked. Integration costs about 17 ns per body on one core; handing half of it to a thread of
+/// the frame's pool costs about a microsecond when that thread is awake and 20-40 µs when it has
+/// gone to sleep (starting a thread, as before the pool, cost 30-70 µs). At N = 10,000 on two
+/// threads the phase's median went from 0.18 to 0.09-0.12 ms.
+pub const PARALLEL_MIN_BODIES: usize = 4_000;
 
 /// Fewest bodies worth giving to one thread; more threads than `len / this` are not started.
 const MIN_BODIES_PER_THREAD: usize = PARALLEL_MIN_BODIES / 2;
@@ -214,7 +215,8 @@ impl World {
     }
 
     /// [`World::integrate`] with the bodies split into contiguous chunks, one per thread, on up to
-    /// `threads` scoped threads (the calling thread takes the first chunk). The result is
+    /// `threads` threads (the calling thread takes the first chunk, the others are jobs of the
+    /// rayon pool it runs on). The result is
     /// bit-identical to one thread for every `threads`, including [`World::wall_impulse`]. Below
     /// [`PARALLEL_MIN_BODIES`] bodies, or with `threads` <= 1, it runs on the calling thread.
     pub fn integrate_threads(&mut self, dt: f64, threads: usize) {
@@ -253,10 +255,10 @@ impl World {
                 chunk.integrate(dt, lo, hi, hits);
             }
         } else {
-            std::thread::scope(|s| {
+            rayon::in_place_scope(|s| {
                 let first = jobs.next();
                 for (chunk, hits) in jobs {
-                    s.spawn(move || chunk.integrate(dt, lo, hi, hits));
+                    s.spawn(move |_| chunk.integrate(dt, lo, hi, hits));
                 }
                 if let Some((chunk, hits)) = first {
                     chunk.integrate(dt, lo, hi, hits);
@@ -282,9 +284,10 @@ impl World {
         if chunks <= 1 {
             fill(&mut self.spin_step, &self.spin);
         } else {
-            std::thread::scope(|s| {
+            rayon::in_place_scope(|s| {
+                let fill = &fill;
                 for (steps, spins) in self.spin_step.chunks_mut(size).zip(self.spin.chunks(size)) {
-                    s.spawn(move || fill(steps, spins));
+                    s.spawn(move |_| fill(steps, spins));
                 }
             });
         }

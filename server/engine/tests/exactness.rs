@@ -171,13 +171,13 @@ fn export_has_tree_bodies_and_exact_pairs() {
 }
 
 /// A clock that advances 2 µs every time it is read.
-struct Ticking(std::cell::Cell<u64>);
+struct Ticking(std::sync::atomic::AtomicU64);
 
 impl foveal_engine::Clock for Ticking {
     fn now_ns(&self) -> u64 {
-        let t = self.0.get() + 2_000;
-        self.0.set(t);
-        t
+        self.0
+            .fetch_add(2_000, std::sync::atomic::Ordering::Relaxed)
+            + 2_000
     }
 }
 
@@ -194,13 +194,13 @@ fn wall_budget_smaller_than_prioritisation_is_held() {
     );
     cfg.audit = false;
     let mut sim = Simulation::new(cfg).expect("valid");
-    let clock = Ticking(std::cell::Cell::new(0));
+    let clock = Ticking(std::sync::atomic::AtomicU64::new(0));
     let r = sim.step(Some(Fixation::at(0.5, 0.5)), &clock).clone();
     assert!(r.budget_exhausted && r.deemed > 0);
     // The deadline counts from the frame's start and is 5 reads later; integration, broad phase
     // and the start of prioritisation take 4 of them, each later read covering at most 576
     // prioritised pairs or 9 steps.
-    let reads = clock.0.get() / 2_000;
+    let reads = clock.0.load(std::sync::atomic::Ordering::Relaxed) / 2_000;
     assert!(reads < 40, "{reads} clock reads");
     assert!(r.sphere_tests <= 8 * 6400, "{}", r.sphere_tests);
     let reached = sim.priorities().reached;

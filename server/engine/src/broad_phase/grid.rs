@@ -74,7 +74,7 @@ const REGION_TILES: usize = 16;
 /// fixation; cut into slabs, only the slabs the fovea's cone passes through do.
 const REGION_SLABS: usize = 4;
 
-/// Fewest bodies worth handing to one thread: starting a scoped thread costs tens of
+/// Fewest bodies worth handing to one thread: waking a sleeping thread of the pool costs tens of
 /// microseconds, about the grid's time for this many bodies.
 const MIN_BODIES_PER_THREAD: usize = 20_000;
 
@@ -695,7 +695,8 @@ fn overlap(p: &Slot, q: &Slot, reach: f64) -> bool {
     ((q.x - p.x).abs() <= reach) & ((q.y - p.y).abs() <= reach) & ((q.z - p.z).abs() <= reach)
 }
 
-/// Run `f` on every item: the first on the calling thread, the others on scoped threads.
+/// Run `f` on every item: the first on the calling thread, the others as jobs of the thread pool
+/// it runs on (see `Simulation::step`).
 fn in_parallel<T: Send, F: Fn(T) + Sync>(items: Vec<T>, f: F) {
     let mut items = items.into_iter();
     let Some(first) = items.next() else {
@@ -705,10 +706,10 @@ fn in_parallel<T: Send, F: Fn(T) + Sync>(items: Vec<T>, f: F) {
         f(first);
         return;
     }
-    std::thread::scope(|s| {
+    rayon::in_place_scope(|s| {
         let f = &f;
         for item in items {
-            s.spawn(move || f(item));
+            s.spawn(move |_| f(item));
         }
         f(first);
     });

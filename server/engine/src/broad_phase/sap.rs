@@ -17,7 +17,8 @@
 //! On several threads the sweep (most of the time: about 0.9 of 1.0 ms at N = 10,000) is split
 //! into consecutive ranges of z-rows whose outputs are concatenated in order, so the pairs, their
 //! order and the index are the same for any thread count; the key refresh and the insertion sorts
-//! stay on the calling thread.
+//! are split the same way, and only the few bodies that change column are moved on the calling
+//! thread.
 
 use super::{Columns, PairBuffer, RUNS};
 use crate::math::Vec3;
@@ -27,7 +28,7 @@ use crate::math::Vec3;
 const MAX_COLUMNS_PER_AXIS: usize = 2048;
 
 /// Fewest bodies worth one thread of the sweep: it costs about 50 ns a body at the paper's
-/// density and starting a scoped thread tens of microseconds.
+/// density and waking a sleeping thread of the pool up to tens of microseconds.
 const MIN_BODIES_PER_THREAD: usize = 4_000;
 
 #[derive(Debug, Clone, Copy)]
@@ -47,7 +48,8 @@ pub(super) struct SweepAndPrune {
     n: usize,
     columns: Vec<Vec<Entry>>,
     body_column: Vec<u32>,
-    moved: Vec<u32>,
+    /// Bodies that left their column this update, per part of the refresh, in column order.
+    part_moved: Vec<Vec<u32>>,
     pairs: PairBuffer,
     /// Output of sweep parts 1.. when running on several threads.
     partition_pairs: Vec<PairBuffer>,
@@ -74,7 +76,7 @@ impl SweepAndPrune {
             n,
             columns: vec![Vec::new(); n * n],
             body_column: vec![u32::MAX; bodies],
-            moved: Vec::new(),
+            part_moved: Vec::new(),
             pairs: PairBuffer::default(),
             partition_pairs: Vec::new(),
             threads: 1,
@@ -112,6 +114,29 @@ impl SweepAndPrune {
         self.min_bodies_per_thread = 1;
     }
 
+    /// The column arithmetic, copied out so that it can be used while the lists are borrowed.
+    fn locator(&self) -> Locator {
+        Locator {
+            grid_lo: self.grid_lo,
+            inv_cell: self.inv_cell,
+            n: self.n,
+        }
+    }
+
+    fn column_of(&self, p: Vec3) -> u32 {
+        self.locator().column_of(p)
+    }
+}
+
+/// Which column a centre is in.
+#[derive(Debug, Clone, Copy)]
+struct Locator {
+    grid_lo: [f64; 2],
+    inv_cell: f64,
+    n: usize,
+}
+
+impl Locator {
     /// Column index of a centre; positions outside the grid clamp to the edge column, which keeps
     /// every overlapping pair within one column of each other because clamping is monotone.
     #[inline]
@@ -124,43 +149,84 @@ impl SweepAndPrune {
         let (iy, iz) = (cy.clamp(0.0, max) as usize, cz.clamp(0.0, max) as usize);
         (iz * self.n + iy) as u32
     }
+}
 
+impl SweepAndPrune {
     /// Bring the sorted lists up to date with `positions` and regenerate the candidate pairs.
+    ///
+    /// The lists are refreshed and sorted in the sweep's parts (consecutive z-rows), then the
+    /// bodies that changed column are moved on the calling thread, in column order, each
+    /// inserted as the insertion sort would have placed it had it been appended to its new
+    /// column before the sort: the lists, and so the pairs, are those of one part.
     pub(super) fn update(&mut self, positions: &[Vec3]) {
-        self.moved.clear();
-        // Refresh keys in place; note bodies that left their column.
-        for c in 0..self.columns.len() {
-            let mut k = 0;
-            while k < self.columns[c].len() {
-                let id = self.columns[c][k].id;
-                let p = positions[id as usize];
-                if self.column_of(p) as usize != c {
-                    self.columns[c].swap_remove(k);
-                    self.moved.push(id);
-                    continue;
+        let locate = self.locator();
+        let parts = self.parts();
+        let first_call = self.body_column.first() == Some(&u32::MAX);
+        self.part_moved.resize_with(parts, Vec::new);
+        self.part_moved.iter_mut().for_each(Vec::clear);
+        let per_part = self.columns.len().div_ceil(parts).div_ceil(self.n) * self.n;
+        let refresh = |c0: usize, columns: &mut [Vec<Entry>], moved: &mut Vec<u32>| {
+            for (c, col) in (c0..).zip(columns.iter_mut()) {
+                // Refresh keys in place; note bodies that left their column.
+                let mut k = 0;
+                while k < col.len() {
+                    let id = col[k].id;
+                    let p = positions[id as usize];
+                    if locate.column_of(p) as usize != c {
+                        col.swap_remove(k);
+                        moved.push(id);
+                        continue;
+                    }
+                    let e = &mut col[k];
+                    (e.x, e.y, e.z) = (p.x, p.y, p.z);
+                    k += 1;
                 }
-                let e = &mut self.columns[c][k];
-                (e.x, e.y, e.z) = (p.x, p.y, p.z);
-                k += 1;
+                insertion_sort(col);
             }
+        };
+        if parts == 1 {
+            refresh(0, &mut self.columns, &mut self.part_moved[0]);
+        } else {
+            rayon::in_place_scope(|s| {
+                let refresh = &refresh;
+                let mut jobs = self
+                    .columns
+                    .chunks_mut(per_part)
+                    .zip(self.part_moved.iter_mut())
+                    .enumerate();
+                let first = jobs.next();
+                for (k, (columns, moved)) in jobs {
+                    s.spawn(move |_| refresh(k * per_part, columns, moved));
+                }
+                if let Some((_, (columns, moved))) = first {
+                    refresh(0, columns, moved);
+                }
+            });
         }
         // First call: every body is "moved" into its column.
-        if self.body_column.first() == Some(&u32::MAX) {
-            self.moved.extend(0..positions.len() as u32);
+        if first_call {
+            self.part_moved.iter_mut().for_each(Vec::clear);
+            self.part_moved[0].extend(0..positions.len() as u32);
         }
-        for &id in &self.moved {
+        for &id in self.part_moved[..parts].iter().flatten() {
             let p = positions[id as usize];
-            let c = self.column_of(p);
+            let c = locate.column_of(p);
             self.body_column[id as usize] = c;
-            self.columns[c as usize].push(Entry {
+            let col = &mut self.columns[c as usize];
+            col.push(Entry {
                 x: p.x,
                 y: p.y,
                 z: p.z,
                 id,
             });
-        }
-        for col in &mut self.columns {
-            insertion_sort(col);
+            // The insertion sort's step for the appended entry.
+            let mut j = col.len() - 1;
+            let e = col[j];
+            while j > 0 && col[j - 1].x > e.x {
+                col[j] = col[j - 1];
+                j -= 1;
+            }
+            col[j] = e;
         }
         self.sweep();
     }
@@ -242,10 +308,10 @@ impl SweepAndPrune {
         } else {
             let (head, tail) = lens.split_at_mut(1);
             let main = self.pairs.storage();
-            std::thread::scope(|s| {
+            rayon::in_place_scope(|s| {
                 let sweep_part = &sweep_part;
                 for ((job, buf), len) in jobs.zip(&mut self.partition_pairs).zip(tail.iter_mut()) {
-                    s.spawn(move || *len = sweep_part(job, buf.storage()));
+                    s.spawn(move |_| *len = sweep_part(job, buf.storage()));
                 }
                 head[0] = sweep_part(first, main);
             });
