@@ -86,10 +86,12 @@ impl Simulation {
                 FrameBudget::Tests((f * mean).round() as u64)
             }
         };
-        sim.broad.update(&sim.world.position);
-        if sim.config.renumber_every > 0 {
-            sim.renumber();
-        }
+        sim.on_pool(|sim| {
+            sim.broad.update(&sim.world.position);
+            if sim.config.renumber_every > 0 {
+                sim.renumber();
+            }
+        });
         Ok(sim)
     }
 
@@ -253,11 +255,17 @@ impl Simulation {
     /// frame's clock starts before the hand-over, so the budget counts it.
     pub fn step(&mut self, fixation: Option<Fixation>, clock: &dyn Clock) -> &FrameReport {
         let t0 = clock.now_ns();
-        match self.pool.clone() {
-            Some(pool) => pool.install(|| self.step_from(t0, fixation, clock)),
-            None => self.step_from(t0, fixation, clock),
-        }
+        self.on_pool(|sim| sim.step_from(t0, fixation, clock));
         &self.report
+    }
+
+    /// Run `f` on the simulation's pool when it has one (more than one thread), else here: the
+    /// parallel phases then hand their parts to the pool's threads, never to rayon's global pool.
+    fn on_pool<R: Send>(&mut self, f: impl FnOnce(&mut Self) -> R + Send) -> R {
+        match self.pool.clone() {
+            Some(pool) => pool.install(|| f(self)),
+            None => f(self),
+        }
     }
 
     /// [`Self::step`] on the calling thread, its frame started at `t0`.
@@ -417,15 +425,17 @@ impl Simulation {
     /// (the audit is not run again).
     pub fn measure_exactly(&mut self) -> &FrameReport {
         if self.report.metrics_stride > 1 {
-            let mut r = self.report.clone();
-            let input = frame_input(&self.tree, &self.world, &self.broad, &self.viewer);
-            let every_pair = crate::metrics::Effort {
-                sample_limit: u32::MAX,
-                ..crate::metrics::Effort::default()
-            };
-            self.collider
-                .measure_metrics(&input, r.fixation, every_pair, None, &mut r);
-            self.report = r;
+            self.on_pool(|sim| {
+                let mut r = sim.report.clone();
+                let input = frame_input(&sim.tree, &sim.world, &sim.broad, &sim.viewer);
+                let every_pair = crate::metrics::Effort {
+                    sample_limit: u32::MAX,
+                    ..crate::metrics::Effort::default()
+                };
+                sim.collider
+                    .measure_metrics(&input, r.fixation, every_pair, None, &mut r);
+                sim.report = r;
+            });
         }
         &self.report
     }
