@@ -209,6 +209,24 @@ impl Collider {
         &self.narrow.pairs
     }
 
+    /// The pairs on this frame's collision list (real and deemed), in pair order. After an exact
+    /// frame the narrow phase has listed them; otherwise every pair's status is read.
+    pub fn collisions(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
+        let pairs = &self.narrow.pairs;
+        let listed = self.narrow.colliding();
+        let scanned = listed.is_none().then(|| {
+            pairs
+                .iter()
+                .filter(|p| p.status.is_collision())
+                .map(|p| (p.a, p.b))
+        });
+        let listed = listed.map(|l| l.map(|i| (pairs[i].a, pairs[i].b)));
+        listed
+            .into_iter()
+            .flatten()
+            .chain(scanned.into_iter().flatten())
+    }
+
     /// What prioritisation computed for the last frame's pairs.
     pub fn priorities(&self) -> &Priorities {
         &self.priorities
@@ -309,13 +327,28 @@ impl Collider {
         foveal_prefix: Option<usize>,
     ) {
         let t0 = clock.now_ns();
-        self.narrow.reset(input.candidates);
-        if budget != FrameBudget::Unlimited {
-            self.narrow.make_room_for_frames();
-        }
         self.foveal_pass = None;
         self.foveal_known = None;
         self.foveal_marked = false;
+        if budget == FrameBudget::Unlimited {
+            // Exact: every order gives the same answer, so skip the ordering and resolve every
+            // pair, on several threads when the frame is large; the reset is done in the runs.
+            self.priorities.clear();
+            self.narrow.resolve_frame(
+                input.candidates,
+                input.tree,
+                input.world,
+                self.config.threads as usize,
+            );
+            self.scheduler.forget();
+            profile.prioritise_ns = 0;
+            profile.narrow_ns = clock.now_ns() - t0;
+            r.candidate_pairs = self.narrow.pairs.len() as u32;
+            r.sphere_tests = self.narrow.tests;
+            return;
+        }
+        self.narrow.reset(input.candidates);
+        self.narrow.make_room_for_frames();
         let fixation_px = fixation.map(|f| {
             let f = f.clamped();
             input.viewer.to_pixels(f.x, f.y)
@@ -324,21 +357,6 @@ impl Collider {
         // A wall-clock meter starts after the reset, which every scheduler pays: the ordering's
         // cost is measured from its start (a frame deadline set before the reset counts it).
         let t_meter = meter.started_ns().unwrap_or(t0);
-        if budget == FrameBudget::Unlimited {
-            // Exact: every order gives the same answer, so skip the ordering and resolve every
-            // pair, on several threads when the frame is large.
-            self.priorities.clear();
-            let t1 = clock.now_ns();
-            self.narrow
-                .resolve_all(input.tree, input.world, self.config.threads as usize);
-            self.narrow.remember_witnesses(input.world.len());
-            self.scheduler.forget();
-            profile.prioritise_ns = t1 - t0;
-            profile.narrow_ns = clock.now_ns() - t1;
-            r.candidate_pairs = self.narrow.pairs.len() as u32;
-            r.sphere_tests = self.narrow.tests;
-            return;
-        }
         let n = self.narrow.pairs.len();
         // With `fovea_first`, frames without regions settle the fovea first too, over every
         // candidate (see `SimConfig::fovea_first`); then the ordering below spends the rest.
