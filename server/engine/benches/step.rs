@@ -27,6 +27,8 @@
 //!   tests with a fixation; per candidate pair in the throughput line. Under a wall-clock budget
 //!   this is paid from the same time as the tests. `ordering/{round-robin,priced}-tests-0.1/..`:
 //!   the same frame with a tenth of its exact sphere tests (per sphere test in the throughput).
+//!   `ordering/sequential*` (pairs in candidate order, each resolved whole) and `ordering/exact`
+//!   (every pair, per sphere test) beside them: what stepping pairs level by level costs a test.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -340,7 +342,32 @@ fn ordering(c: &mut Criterion) {
             });
         }
         let exact_tests = sim.last_report().sphere_tests;
-        for kind in [SchedulerKind::RoundRobin, SchedulerKind::Priced] {
+        {
+            // The same frame resolved exactly, pair after pair: the sphere test's own cost.
+            let mut col = Collider::new(&exact(n), sim.tree(), sim.viewer()).expect("valid");
+            let input = sim.frame_input();
+            let mut r = FrameReport::default();
+            let mut p = PhaseProfile::default();
+            g.throughput(Throughput::Elements(exact_tests));
+            g.bench_function(BenchmarkId::new("exact", n), |b| {
+                b.iter(|| {
+                    col.collide(
+                        &input,
+                        fixation,
+                        FrameBudget::Unlimited,
+                        &FrozenClock,
+                        &mut r,
+                        &mut p,
+                    );
+                    black_box(r.sphere_tests)
+                })
+            });
+        }
+        for kind in [
+            SchedulerKind::RoundRobin,
+            SchedulerKind::Sequential,
+            SchedulerKind::Priced,
+        ] {
             let cfg = SimConfig {
                 scheduler: kind,
                 ..exact(n)
