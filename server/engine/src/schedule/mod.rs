@@ -83,15 +83,26 @@ pub(crate) fn round_robin(
     meter: &mut Meter<'_>,
 ) {
     while !queue.is_empty() {
-        queue.retain(|&i| {
+        let mut kept = 0;
+        for k in 0..queue.len() {
             if meter.exhausted(np.tests) {
-                return true;
+                // The budget is spent: the pairs this round did not reach stay queued after
+                // those it kept, as a `retain` would leave them, moved in one copy instead of
+                // visited one by one (a pass over up to millions of entries after the deadline,
+                // milliseconds at a million bodies, which the frame's learnt tail then took
+                // from the next frames' narrow phases).
+                let rest = queue.len() - k;
+                queue.copy_within(k.., kept);
+                queue.truncate(kept + rest);
+                return;
             }
-            np.step(i as usize, work.tree, work.world) == StepOutcome::Active
-        });
-        if meter.was_exhausted() {
-            return;
+            let i = queue[k];
+            if np.step(i as usize, work.tree, work.world) == StepOutcome::Active {
+                queue[kept] = i;
+                kept += 1;
+            }
         }
+        queue.truncate(kept);
         np.compact_if_sparse();
     }
 }
