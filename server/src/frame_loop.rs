@@ -25,6 +25,7 @@ use crate::error::ServerError;
 use crate::fanout::FrameMsg;
 use crate::state::{Scene, Shared};
 use crate::summary::Summary;
+use foveal_engine::Clock;
 
 /// A new simulation to run from the next frame boundary.
 #[derive(Debug)]
@@ -134,6 +135,13 @@ fn handle(
     }
 }
 
+/// How long before each frame's deadline the loop keeps a simulation's pool busy instead of
+/// asleep: the threads of a pool that slept through the pause between frames (and the processors
+/// under them) woke slowly enough to make a paced 10,000-body exact frame on two threads up to
+/// twice as slow as a back-to-back one. 200 us of spinning a thread a frame (1.2% of a core at
+/// 60 Hz) recovered most of it; longer did no better (docs/BENCHMARKS.md).
+const POOL_WARM: Duration = Duration::from_micros(200);
+
 fn run(
     mut sim: Simulation,
     shared: &Shared,
@@ -148,9 +156,18 @@ fn run(
     tracing::info!(period_ms = period.as_secs_f64() * 1e3, "frame loop started");
     'frames: loop {
         // Wait for the deadline, serving commands meanwhile; with the deadline already past, only
-        // drain what is pending.
+        // drain what is pending. A simulation with a pool stops waiting POOL_WARM early and keeps
+        // its pool busy until the deadline (see `Simulation::warm_pool_until`).
+        let warm = if sim.config().threads > 1 {
+            POOL_WARM
+        } else {
+            Duration::ZERO
+        };
         loop {
-            let wait = deadline.saturating_duration_since(Instant::now());
+            let wait = deadline
+                .checked_sub(warm)
+                .unwrap_or(deadline)
+                .saturating_duration_since(Instant::now());
             let cmd = if wait.is_zero() {
                 match commands.try_recv() {
                     Ok(cmd) => cmd,
@@ -169,6 +186,11 @@ fn run(
             }
         }
 
+        let left = deadline.saturating_duration_since(Instant::now());
+        if !left.is_zero() {
+            let until = clock.now_ns().saturating_add(left.as_nanos() as u64);
+            sim.warm_pool_until(&clock, until);
+        }
         let start = Instant::now();
         let resolved = shared.fixation.resolve(start, shared.gaze_max_age);
         let report = sim.step(Some(resolved.fixation), &clock);
