@@ -59,7 +59,8 @@ pub struct Cli {
     /// Worker threads for the frame's phases (1..=64; default: the machine's cores, at most 64):
     /// with more than one, every frame runs on a pool of this many threads kept for the whole
     /// run (in exact frames its threads wait for the frame's parts awake, yielding their cores,
-    /// instead of sleeping). Under sphere-test and exact budgets the reports do not depend on
+    /// instead of sleeping, and before every frame they spin for 200 us so that it does not
+    /// start on sleeping processors). Under sphere-test and exact budgets the reports do not depend on
     /// it; under a wall-clock budget more threads settle more pairs in the same time.
     #[arg(long, env = "FOVEAL_THREADS", default_value_t = default_threads())]
     pub threads: u32,
