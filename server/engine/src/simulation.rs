@@ -303,7 +303,13 @@ impl Simulation {
         if let Some(pool) = &self.pool {
             let until = until_ns.min(clock.now_ns().saturating_add(MAX_POOL_WARM_NS));
             pool.broadcast(|_| {
-                while clock.now_ns() < until {
+                // Bounded by reads too: a clock that does not advance (a frozen one) must not
+                // keep the pool spinning for ever. A read takes at least a nanosecond, so the
+                // bound is never shorter than the cap.
+                for _ in 0..MAX_POOL_WARM_NS {
+                    if clock.now_ns() >= until {
+                        break;
+                    }
                     std::hint::spin_loop();
                 }
             });
@@ -890,7 +896,8 @@ mod tests {
     }
 
     /// Warming the pool spins every thread of it until the clock reaches the time asked, and no
-    /// further than the cap; one thread has no pool and returns without reading the clock.
+    /// further than the cap, even on a clock that does not advance; one thread has no pool and
+    /// returns without reading the clock.
     #[test]
     fn warming_the_pool_spins_until_the_time_asked_and_no_longer_than_the_cap() {
         let run = |threads: u32, until: u64| {
@@ -907,6 +914,13 @@ mod tests {
         assert!(reached >= 500_000, "stopped at {reached} ns");
         // Each thread stops at its first reading at or past the time (a tick of 1 us each).
         assert!(reached < 500_000 + 4 * 1_000, "went on to {reached} ns");
+        // A clock that does not advance still lets it return.
+        let mut cfg = SimConfig::default();
+        cfg.scene.bodies = 50;
+        cfg.threads = 2;
+        Simulation::new(cfg)
+            .expect("valid")
+            .warm_pool_until(&FrozenClock, u64::MAX);
         let capped = run(2, u64::MAX);
         assert!(
             (MAX_POOL_WARM_NS..MAX_POOL_WARM_NS + 4 * 1_000).contains(&capped),
