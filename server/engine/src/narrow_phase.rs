@@ -384,6 +384,8 @@ impl NarrowPhase {
             self.witness[slot as usize] = kept;
         }
         self.pairs.clear();
+        // The colliding lists index the pairs just dropped.
+        self.hit_runs = 0;
     }
 
     /// Whether pair `i` has a witness from last frame: its first step re-tests the leaf pair that
@@ -439,6 +441,8 @@ impl NarrowPhase {
     /// bit-identical to resolving the pairs one after another, whichever thread takes which run;
     /// below [`PARALLEL_MIN_PAIRS`] pairs, one thread is used.
     pub fn resolve_all(&mut self, tree: &SphereTree, world: &World, threads: usize) {
+        // The runs below rewrite the colliding lists; only `resolve_frame` keeps them.
+        self.hit_runs = 0;
         // A pair already active keeps its list in the main arena: only a fresh frame splits.
         if self.pairs.iter().any(|p| p.status == PairStatus::Active) {
             let mut lane = self.lane();
@@ -516,8 +520,7 @@ impl NarrowPhase {
         if self.run_hits.len() < run_count {
             self.run_hits.resize_with(run_count, Vec::new);
         }
-        self.lane_arenas.resize_with(parts - 1, Vec::new);
-        self.lane_scratch.resize_with(parts - 1, Default::default);
+        self.make_lanes(parts);
         let witness = &self.witness;
         let mut first_arena = std::mem::take(&mut self.arena);
         let candidates: Box<dyn Iterator<Item = &[(u32, u32)]>> = match fresh {
@@ -600,6 +603,17 @@ impl NarrowPhase {
         run_count
     }
 
+    /// Storage for `parts - 1` helper threads' lanes. Only grown: a frame below
+    /// [`PARALLEL_MIN_PAIRS`] between two large ones must not make the next large one allocate
+    /// its lanes again. A lane holds one pair's descent at a time, so what it keeps is bounded by
+    /// one pair's.
+    fn make_lanes(&mut self, parts: usize) {
+        if self.lane_arenas.len() < parts - 1 {
+            self.lane_arenas.resize_with(parts - 1, Vec::new);
+            self.lane_scratch.resize_with(parts - 1, Default::default);
+        }
+    }
+
     /// The indices of the pairs the last [`Self::resolve_frame`] found colliding, in pair order,
     /// or `None` if the frame was started otherwise: an exact frame's response then reads its
     /// few colliding pairs instead of every pair's status.
@@ -664,8 +678,7 @@ impl NarrowPhase {
             return settled;
         }
         let size = (n / (parts * RUNS_PER_THREAD)).clamp(MIN_RUN, MAX_RUN);
-        self.lane_arenas.resize_with(parts - 1, Vec::new);
-        self.lane_scratch.resize_with(parts - 1, Default::default);
+        self.make_lanes(parts);
         let witness = &self.witness;
         let mut first_arena = std::mem::take(&mut self.arena);
         let runs: Vec<Mutex<(&mut [PairState], &mut [u8])>> = self.pairs[..n]
@@ -1329,6 +1342,22 @@ mod tests {
                 world.integrate(0.01);
             }
             assert!(collided > 0, "no witness to compare");
+            // The list names pairs of its frame only: a renumbering drops the pairs, and
+            // resolving them again through `resolve_all` rewrites the runs it lives in.
+            fused.resolve_frame(&pairs, &tree, &world, threads);
+            assert!(fused.colliding().is_some_and(|mut c| c.next().is_some()));
+            fused.resolve_all(&tree, &world, threads);
+            assert!(
+                fused.colliding().is_none(),
+                "threads {threads}: after resolve_all"
+            );
+            fused.resolve_frame(&pairs, &tree, &world, threads);
+            let identity: Vec<u32> = (0..world.len() as u32).collect();
+            fused.renumber(&identity);
+            assert!(
+                fused.colliding().is_none(),
+                "threads {threads}: after renumber"
+            );
         }
     }
 

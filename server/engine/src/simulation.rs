@@ -555,10 +555,20 @@ fn keeping_the_pool_awake<R>(f: impl FnOnce() -> R) -> R {
                 }
             });
         }
-        let out = f();
-        awake.store(false, Ordering::Release);
-        out
+        // The spinners stop however the frame ends: the scope waits for them before it
+        // propagates a panic, so a flag cleared only on return would hang the caller.
+        let _stop = StopOnDrop(&awake);
+        f()
     })
+}
+
+/// Clears its flag when dropped, on return or unwind alike.
+struct StopOnDrop<'a>(&'a AtomicBool);
+
+impl Drop for StopOnDrop<'_> {
+    fn drop(&mut self) {
+        self.0.store(false, Ordering::Release);
+    }
 }
 
 /// The longest [`Simulation::warm_pool_until`] keeps the pool busy, whatever it is asked: 2 ms.
@@ -893,6 +903,40 @@ mod tests {
             (reports, sim.world().position.clone())
         };
         assert_eq!(run(4), run(1));
+    }
+
+    /// A frame that panics on a pool whose other threads are kept awake for it hands the panic
+    /// to the caller: the threads stop spinning however the frame ends (before, they spun for
+    /// ever and the caller hung, so a server could not report its frame loop's panic).
+    #[test]
+    fn a_frame_that_panics_on_a_kept_awake_pool_returns_the_panic() {
+        /// Reads normally, then panics from its `.1`th reading on.
+        struct FailingClock(std::sync::atomic::AtomicU64, u64);
+        impl Clock for FailingClock {
+            fn now_ns(&self) -> u64 {
+                let read = self.0.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                assert!(read < self.1, "the clock failed at read {read}");
+                read
+            }
+        }
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let mut cfg = SimConfig::default();
+            cfg.scene.bodies = 300;
+            cfg.budget = BudgetSpec::Exact;
+            cfg.threads = 2;
+            let mut sim = Simulation::new(cfg).expect("valid");
+            // The frame's first read is before the hand-over to the pool; the second inside it.
+            let clock = FailingClock(std::sync::atomic::AtomicU64::new(0), 1);
+            let out = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                sim.step(None, &clock);
+            }));
+            let _ = tx.send(out.is_err());
+        });
+        let panicked = rx
+            .recv_timeout(std::time::Duration::from_secs(60))
+            .expect("the frame neither returned nor panicked within 60 s: the pool hung");
+        assert!(panicked, "the failing clock did not fail the frame");
     }
 
     /// Warming the pool spins every thread of it until the clock reaches the time asked, and no
