@@ -124,9 +124,13 @@ impl BucketQueue {
     #[inline]
     fn key(value: f32) -> usize {
         // Positive floats order like their bits; NaN, zero and negatives go to the bottom.
-        // Branch-free: zero weights (far from the fixation) and positive ones mix unpredictably.
-        let k = ((value.to_bits() >> 21) as usize).min(BUCKETS - 1);
-        k & usize::from(value > 0.0).wrapping_neg()
+        // The positive floats, +inf included, are exactly the bit patterns 1..=0x7f80_0000,
+        // whose top 11 bits are at most 1020. Tested on the bits and applied by a product so
+        // that it stays free of branches: zero weights (far from the fixation) and positive
+        // ones mix unpredictably, and a comparison of floats compiled to a branch.
+        let bits = value.to_bits();
+        let positive = bits.wrapping_sub(1) < 0x7f80_0000;
+        (bits >> 21) as usize * usize::from(positive)
     }
 
     #[inline]
@@ -483,18 +487,35 @@ impl Priced {
     /// calibrated state: one pass writing sequential arrays and a histogram, without a per-pair
     /// projection, division, square root or queue push.
     fn price<const REMEMBER: bool>(&mut self, np: &NarrowPhase, work: &Work<'_>) {
+        let gaze = self.options.gaze && work.view.is_some();
+        let full = work.priorities.body_records().len() == work.world.len();
+        // The switches are fixed for the frame: as constants, the pass has no branch on them
+        // per pair. Under a wall-clock budget this pass is paid from the tests' time, so every
+        // nanosecond a pair counts (see "The priced ordering made cheaper" in BENCHMARKS.md).
+        match (gaze, full) {
+            (true, true) => self.price_with::<REMEMBER, true, true>(np, work),
+            (false, true) => self.price_with::<REMEMBER, false, true>(np, work),
+            (_, false) => self.price_with::<REMEMBER, false, false>(np, work),
+        }
+    }
+
+    fn price_with<const REMEMBER: bool, const GAZE: bool, const FULL: bool>(
+        &mut self,
+        np: &NarrowPhase,
+        work: &Work<'_>,
+    ) {
         let pr = work.priorities;
         let cal = work.calibration;
-        let gaze = self.options.gaze && work.view.is_some();
         let inv_d2 = (0.25 / (work.tree.root_radius() * work.tree.root_radius())) as f32;
         let records = pr.body_records();
         // Every pair is untested: its value per unit weight depends only on its distance bucket,
         // whether it has a witness from last frame, and what it cost last frame if remembered.
-        let mut first = [[0f32; calibration::DIST_BUCKETS]; 2];
-        for (w, row) in first.iter_mut().enumerate() {
-            for (d, r) in row.iter_mut().enumerate() {
-                *r = self.ratio[cal.initial_index(w == 1, 0, d as u8)];
-            }
+        // Indexed by witness * DIST_BUCKETS + bucket, so that the witness selects by arithmetic
+        // rather than by a branch (a tenth to a fifth of the pairs have one, in no order).
+        let mut first = [0f32; 2 * calibration::DIST_BUCKETS];
+        for (j, r) in first.iter_mut().enumerate() {
+            let (w, d) = (j / calibration::DIST_BUCKETS, j % calibration::DIST_BUCKETS);
+            *r = self.ratio[cal.initial_index(w == 1, 0, d as u8)];
         }
         let ratio = &self.ratio;
         let memory = &self.memory;
@@ -504,7 +525,6 @@ impl Priced {
         init.clear(np.pairs.len());
         let counts = &mut init.counts[..BUCKETS];
         let (mut lo, mut hi) = (BUCKETS, 0);
-        let full = records.len() == work.world.len();
         let outs = self
             .weight
             .iter_mut()
@@ -512,9 +532,9 @@ impl Priced {
             .zip(init.keys.iter_mut());
         for (i, (p, ((w_out, d_out), k_out))) in np.pairs.iter().zip(outs).enumerate() {
             let (a, b) = (p.a as usize, p.b as usize);
-            let (w, d2) = if full {
+            let (w, d2) = if FULL {
                 let (ra, rb) = (records[a], records[b]);
-                let w = if gaze {
+                let w = if GAZE {
                     0.5 * (ra[3] + rb[3])
                 } else {
                     0.5 * (pr.body_scale(a) + pr.body_scale(b))
@@ -540,13 +560,31 @@ impl Priced {
             let r = if remembered > 0 && !witness {
                 ratio[cal.initial_index(false, remembered, bucket)]
             } else {
-                first[usize::from(witness)][bucket as usize % calibration::DIST_BUCKETS]
+                first[usize::from(witness) * calibration::DIST_BUCKETS
+                    + bucket as usize % calibration::DIST_BUCKETS]
             };
-            let key = BucketQueue::key(w * r);
-            *k_out = key as u16;
-            counts[key] += 1;
-            lo = lo.min(key);
-            hi = hi.max(key);
+            *k_out = BucketQueue::key(w * r) as u16;
+        }
+        // Counted in a pass of their own, four counters a bucket: the pricing's chain of
+        // dependent loads no longer ends in a read-modify-write that the next pair's may wait
+        // for, and runs of equal keys (the zero weights far from the fixation) do not chain
+        // through one counter.
+        let mut quad = [[0u32; 4]; BUCKETS];
+        let mut chunks = init.keys.chunks_exact(4);
+        for c in &mut chunks {
+            for (lane, &k) in c.iter().enumerate() {
+                quad[k as usize][lane] += 1;
+            }
+        }
+        for &k in chunks.remainder() {
+            quad[k as usize][0] += 1;
+        }
+        for (k, (q, c)) in quad.iter().zip(counts.iter_mut()).enumerate() {
+            *c = q[0] + q[1] + q[2] + q[3];
+            if *c > 0 {
+                lo = lo.min(k);
+                hi = hi.max(k);
+            }
         }
         init.span = (lo, hi);
         init.sort();
@@ -616,6 +654,47 @@ mod tests {
         q.push(1.0, 9);
         q.clear();
         assert_eq!(q.pop(), None);
+    }
+
+    #[test]
+    fn a_key_is_the_top_bits_of_a_positive_value_and_zero_otherwise() {
+        // The plain definition the branch-free one must match, bucket for bucket.
+        let plain = |v: f32| {
+            if v > 0.0 {
+                ((v.to_bits() >> 21) as usize).min(BUCKETS - 1)
+            } else {
+                0
+            }
+        };
+        let edges = [
+            0.0f32,
+            -0.0,
+            f32::from_bits(1),
+            f32::MIN_POSITIVE,
+            1e-30,
+            0.25,
+            1.0,
+            3.0,
+            1e30,
+            f32::MAX,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            -f32::NAN,
+            -1.0,
+            -f32::MAX,
+            f32::from_bits(0x7fc0_0001),
+            f32::from_bits(0xffff_ffff),
+        ];
+        for v in edges {
+            assert_eq!(BucketQueue::key(v), plain(v), "{v:e} ({:#x})", v.to_bits());
+            assert!(BucketQueue::key(v) < BUCKETS);
+        }
+        // And over the bit patterns at a coarse stride, every sign and exponent.
+        for bits in (0..=u32::MAX).step_by(65_537) {
+            let v = f32::from_bits(bits);
+            assert_eq!(BucketQueue::key(v), plain(v), "{bits:#x}");
+        }
     }
 
     #[test]
