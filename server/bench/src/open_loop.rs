@@ -10,9 +10,10 @@
 //! bound of a frame is taken at the most tests any scheduler of that budget actually used.
 //!
 //! Budgets are in sphere tests, as fractions of the frame's exact cost (deterministic), and in
-//! wall-clock time, as fractions of the median exact narrow-phase time of the scene measured before
-//! the recorded frames (machine-dependent; prioritisation is inside that budget). Wall-clock
-//! schedulers run in a rotating order so none is always first into a cold cache.
+//! wall-clock time, as fractions of the exact narrow phase's time on the machine as it runs the
+//! cells: an exact collider follows every frame, timed as the cells are, and a frame's base is the
+//! median of the last [`BASE_WINDOW`] (machine-dependent; prioritisation is inside that budget).
+//! Wall-clock schedulers run in a rotating order so none is always first into a cold cache.
 //!
 //! A condition fixes the scheduling model, the measuring model and what the scheduler is told about
 //! the gaze: the viewer's fixation, or the screen centre (a control: the same viewer, measured at
@@ -24,7 +25,7 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use foveal_engine::clairvoyant::{self, PairTruth};
-use foveal_engine::collider::Collider;
+use foveal_engine::collider::{Collider, FrameInput};
 use foveal_engine::fixation::FrameView;
 use foveal_engine::schedule::PricedOptions;
 use foveal_engine::warm;
@@ -168,7 +169,8 @@ pub struct OpenLoopConfig {
     pub frames: Vec<(u32, u32)>,
     /// Unrecorded exact frames first (the random start has deep overlaps).
     pub warmup: u32,
-    /// Exact frames timed, before the recorded ones, for the wall-clock budgets.
+    /// Exact frames before the recorded ones (the wall-clock runs learn on the last of them; 0:
+    /// no wall-clock budgets, nothing timed).
     pub timing_frames: u32,
     /// Budgets.
     pub budgets: Vec<Budget>,
@@ -423,8 +425,15 @@ pub struct RunResult {
     pub seed: u64,
     /// Frames recorded.
     pub frames: u32,
-    /// Median exact narrow-phase time of the scene (ms).
+    /// Median over the recorded frames of the wall-clock budgets' base (ms): the exact narrow
+    /// phase's time, the median of the last [`BASE_WINDOW`] frames timed alongside the cells.
     pub exact_narrow_ms: f64,
+    /// The base's 5th and 95th percentiles over the recorded frames (ms): it follows the frames'
+    /// exact cost and the machine's speed.
+    pub base_range_ms: (f64, f64),
+    /// The same percentiles of the base's time per sphere test (ns, the window's median): the
+    /// machine's speed alone.
+    pub speed_range_ns: (f64, f64),
     /// Mean exact cost (sphere tests per frame).
     pub exact_tests: f64,
     /// `[condition][budget][scheduler]`: (mean true P, mean tests, mean prioritise ms).
@@ -435,6 +444,79 @@ pub struct RunResult {
     all_deemed: Vec<f64>,
     /// `[condition]`: frames counted (fewer than `frames` under saccadic suppression).
     pub counted: Vec<u32>,
+}
+
+/// Frames whose exact narrow-phase times, timed alongside the cells, give a frame's wall-clock
+/// budgets their base (the median). Why not one figure timed before the recorded frames: on a
+/// shared machine a slow stretch lasts from milliseconds to a second, and timed over 30 frames
+/// before them one set a seed's every wall-clock budget 1.3-1.6x too large (round-robin then did
+/// 4-5x its tests); timed over all of them in a pass of their own, one seed's came out 1.2x the
+/// others'. Tracking the recent frames keeps the budgets a fraction of what the exact frame costs
+/// on the machine as it runs the cells, and the median ignores a single slow frame.
+const BASE_WINDOW: usize = 31;
+
+/// A seed whose base's time per sphere test has a 95th percentile over its 5th above this is
+/// named in the report: the machine's speed moved that much during its run. Its cells are still
+/// fair between schedulers, each frame's budgets following the machine, but a reader comparing
+/// runs should know.
+const BASE_SPREAD: f64 = 1.2;
+
+/// Bring a frame's inputs into cache, as a server's frame finds them (see [`run_one`]).
+fn warm_frame(input: &FrameInput<'_>) {
+    warm::lines(&input.world.position);
+    warm::lines(&input.world.basis);
+    warm::lines(input.candidates);
+    if let Some(c) = input.columns {
+        c.warm();
+    }
+}
+
+/// One exact frame of `c` on `input`, warmed first as the wall-clock cells are: its
+/// prioritisation and narrow phase (ns).
+fn time_exact(c: &mut Collider, input: &FrameInput<'_>, clock: &dyn Clock) -> (u64, u64) {
+    c.warm();
+    warm_frame(input);
+    let mut r = FrameReport::default();
+    let mut p = PhaseProfile::default();
+    c.collide(input, None, FrameBudget::Unlimited, clock, &mut r, &mut p);
+    (p.prioritise_ns + p.narrow_ns, r.sphere_tests)
+}
+
+/// The last [`BASE_WINDOW`] exact frames' (time, sphere tests), and their medians.
+#[derive(Debug, Default)]
+struct BaseWindow {
+    frames: std::collections::VecDeque<(u64, u64)>,
+    sorted: Vec<f64>,
+}
+
+impl BaseWindow {
+    fn push(&mut self, frame: (u64, u64)) {
+        if self.frames.len() == BASE_WINDOW {
+            self.frames.pop_front();
+        }
+        self.frames.push_back(frame);
+    }
+
+    /// The median (upper of the middle two) of `f` over the window, 0 if empty.
+    fn median_of(&mut self, f: impl Fn((u64, u64)) -> f64) -> f64 {
+        self.sorted.clear();
+        self.sorted.extend(self.frames.iter().map(|&x| f(x)));
+        self.sorted.sort_unstable_by(f64::total_cmp);
+        self.sorted
+            .get(self.sorted.len() / 2)
+            .copied()
+            .unwrap_or(0.0)
+    }
+
+    /// The median time (ns): the base.
+    fn median(&mut self) -> f64 {
+        self.median_of(|(ns, _)| ns as f64)
+    }
+
+    /// The median time per sphere test (ns): the machine's speed, whatever the frames' cost.
+    fn median_rate(&mut self) -> f64 {
+        self.median_of(|(ns, tests)| ns as f64 / tests.max(1) as f64)
+    }
 }
 
 fn sim_config(n: u32, seed: u64, fovea_first: bool) -> SimConfig {
@@ -627,25 +709,19 @@ pub fn run_frames_parts(
     let by_budget: Vec<Vec<usize>> = (0..budgets.len())
         .map(|ub| (0..runs.len()).filter(|&u| runs[u].budget == ub).collect())
         .collect();
-    // Time the exact narrow phase on frames before the recorded ones.
+    // The wall-clock budgets' base (see BASE_WINDOW): an exact collider follows every frame, timed
+    // as the wall-clock cells are, the timing frames filling the window.
+    let frames = cfg.frames_for(n);
     let mut exact = Collider::new(&base, source.tree(), source.viewer())?;
-    let mut times = Vec::new();
+    let mut window = BaseWindow::default();
     for _ in 0..cfg.timing_frames {
         source.step(None, &FrozenClock);
-        let mut r = FrameReport::default();
-        let mut p = PhaseProfile::default();
-        exact.collide(
-            &source.frame_input(),
-            None,
-            FrameBudget::Unlimited,
-            &clock,
-            &mut r,
-            &mut p,
-        );
-        times.push(p.prioritise_ns + p.narrow_ns);
+        window.push(time_exact(&mut exact, &source.frame_input(), &clock));
     }
-    times.sort_unstable();
-    let exact_ns = times.get(times.len() / 2).map_or(0.0, |&t| t as f64);
+    let mut bases = Vec::with_capacity(frames as usize);
+    let mut rates = Vec::with_capacity(frames as usize);
+    let exact_ns = window.median();
+    let mut base_ns = exact_ns;
     // Wall-clock runs first see the last timing frame, uncounted (gaze at the screen centre), as
     // a server that has been running would have seen the frame before: they learn what their
     // ordering costs here and keep that frame's witnesses. Sphere-test runs do not, so their rows
@@ -673,7 +749,6 @@ pub fn run_frames_parts(
         }
     }
 
-    let frames = cfg.frames_for(n);
     let mut cells: Vec<Vec<Vec<Vec<Cell>>>> = parts
         .iter()
         .map(|p| {
@@ -716,6 +791,12 @@ pub fn run_frames_parts(
         let frame_tests = source.step(None, &FrozenClock).sphere_tests;
         exact_tests += frame_tests as f64;
         let input = source.frame_input();
+        if cfg.timing_frames > 0 {
+            window.push(time_exact(&mut exact, &input, &clock));
+            base_ns = window.median();
+            bases.push(base_ns);
+            rates.push(window.median_rate());
+        }
         clairvoyant::truths(input.tree, input.world, input.candidates, &mut truths);
         let fix_px = input.viewer.to_pixels(fixation.x, fixation.y);
         for (mi, model) in models.iter().enumerate() {
@@ -754,7 +835,7 @@ pub fn run_frames_parts(
             let fb = match *budget {
                 Budget::Tests(x) => FrameBudget::Tests((x * frame_tests as f64).round() as u64),
                 Budget::FixedTests(k) => FrameBudget::Tests(k),
-                Budget::Wall(x) => FrameBudget::Wall((x * exact_ns).round() as u64),
+                Budget::Wall(x) => FrameBudget::Wall((x * base_ns).round() as u64),
             };
             let clk: &dyn Clock = match budget {
                 Budget::Tests(_) | Budget::FixedTests(_) => &FrozenClock,
@@ -778,12 +859,7 @@ pub fn run_frames_parts(
                     // A server runs one collider, whose buffers and frame stay cached between
                     // frames; here dozens take turns, so bring this one's back before timing it.
                     run.collider.warm();
-                    warm::lines(&input.world.position);
-                    warm::lines(&input.world.basis);
-                    warm::lines(input.candidates);
-                    if let Some(c) = input.columns {
-                        c.warm();
-                    }
+                    warm_frame(&input);
                 }
                 run.collider
                     .collide(&input, Some(fed), fb, clk, &mut r, &mut prof);
@@ -827,6 +903,13 @@ pub fn run_frames_parts(
             }
         }
     }
+    let pct = |v: &mut Vec<f64>, q: f64| {
+        v.sort_unstable_by(f64::total_cmp);
+        v.get((q * v.len() as f64) as usize).copied().unwrap_or(0.0)
+    };
+    let base_ms = pct(&mut bases, 0.5) * 1e-6;
+    let base_range_ms = (pct(&mut bases, 0.05) * 1e-6, pct(&mut bases, 0.95) * 1e-6);
+    let speed_range_ns = (pct(&mut rates, 0.05), pct(&mut rates, 0.95));
     // Means over the frames each condition counted.
     let mut out = Vec::with_capacity(parts.len());
     for (pi, p) in parts.iter().enumerate() {
@@ -850,7 +933,9 @@ pub fn run_frames_parts(
             n,
             seed,
             frames,
-            exact_narrow_ms: exact_ns * 1e-6,
+            exact_narrow_ms: base_ms,
+            base_range_ms,
+            speed_range_ns,
             exact_tests: exact_tests * k,
             cells,
             bound,
@@ -1011,7 +1096,7 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
 /// CSV of the per-run means.
 pub fn runs_csv(cfg: &OpenLoopConfig, runs: &[RunResult]) -> String {
     let mut s = String::from(
-        "n,seed,frames,exact_narrow_ms,exact_tests,condition,budget,scheduler,true_p,tests,prioritise_ms,bound,all_deemed\n",
+        "n,seed,frames,exact_narrow_ms,exact_tests,condition,budget,scheduler,true_p,tests,prioritise_ms,bound,all_deemed,base_p05_ms,base_p95_ms,ns_per_test_p05,ns_per_test_p95\n",
     );
     for r in runs {
         for (ci, cond) in cfg.conditions.iter().enumerate() {
@@ -1020,7 +1105,7 @@ pub fn runs_csv(cfg: &OpenLoopConfig, runs: &[RunResult]) -> String {
                     let c = r.cells[ci][bi][j];
                     let _ = writeln!(
                         s,
-                        "{},{},{},{:.6},{:.1},\"{}\",{},{},{:.6e},{:.1},{:.6},{:.6e},{:.6e}",
+                        "{},{},{},{:.6},{:.1},\"{}\",{},{},{:.6e},{:.1},{:.6},{:.6e},{:.6e},{:.6},{:.6},{:.3},{:.3}",
                         r.n,
                         r.seed,
                         r.frames,
@@ -1034,6 +1119,10 @@ pub fn runs_csv(cfg: &OpenLoopConfig, runs: &[RunResult]) -> String {
                         c.prioritise_ms,
                         r.bound[ci][bi],
                         r.all_deemed[ci],
+                        r.base_range_ms.0,
+                        r.base_range_ms.1,
+                        r.speed_range_ns.0,
+                        r.speed_range_ns.1,
                     );
                 }
             }
@@ -1176,6 +1265,35 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
             },
             tests.fmt(3)
         );
+        if cfg.timing_frames > 0 {
+            let listed: Vec<String> = rs
+                .iter()
+                .map(|r| {
+                    let ((lo, hi), (a, b)) = (r.base_range_ms, r.speed_range_ns);
+                    format!("{lo:.4}-{hi:.4} ms ({a:.2}-{b:.2} ns a sphere test)")
+                })
+                .collect();
+            let _ = writeln!(
+                s,
+                "Wall-clock budgets are fractions of the exact narrow phase's time, the median of \
+                 the last {BASE_WINDOW} frames timed alongside the cells; its 5-95% range over \
+                 the frames, by seed: {}.\n",
+                listed.join(", ")
+            );
+            for r in &rs {
+                let (lo, hi) = r.speed_range_ns;
+                if hi > BASE_SPREAD * lo {
+                    let _ = writeln!(
+                        s,
+                        "Seed {}: the machine's speed moved during the run (the exact frames took \
+                         {lo:.2}-{hi:.2} ns a sphere test, {:.2}x); each frame's budgets \
+                         followed it.\n",
+                        r.seed,
+                        hi / lo
+                    );
+                }
+            }
+        }
         for (ci, cond) in cfg.conditions.iter().enumerate() {
             if cond.suppress_saccades {
                 let c = MeanCi::of(rs.iter().map(|r| f64::from(r.counted[ci])));
@@ -1321,6 +1439,69 @@ mod tests {
         let md = markdown(&cfg, &runs, &rows);
         assert!(md.contains("| priced |") && md.contains("| clairvoyant |"));
         assert!(md.contains("halves round-robin's true P"));
+    }
+
+    #[test]
+    fn the_wall_clock_base_is_reported_and_a_moving_machine_named() {
+        let mut cfg = OpenLoopConfig::quick();
+        cfg.ns = vec![150];
+        cfg.seeds = vec![1, 2];
+        cfg.frames = vec![(150, 6)];
+        cfg.warmup = 5;
+        cfg.timing_frames = 3;
+        cfg.budgets = vec![Budget::Tests(0.1), Budget::Wall(0.3)];
+        cfg.conditions.truncate(1);
+        let mut runs = run(&cfg).expect("runs");
+        for r in &runs {
+            let (lo, hi) = r.base_range_ms;
+            assert!(0.0 < lo && lo <= r.exact_narrow_ms && r.exact_narrow_ms <= hi);
+            let (a, b) = r.speed_range_ns;
+            assert!(0.0 < a && a <= b && b.is_finite());
+        }
+        let named = |runs: &[RunResult]| {
+            let md = markdown(&cfg, runs, &summarise(&cfg, runs));
+            assert!(md.contains("its 5-95% range over the frames"));
+            [1, 2].map(|seed| md.contains(&format!("Seed {seed}: the machine's speed moved")))
+        };
+        // The frames' cost may move the base; only the time per test names a seed.
+        runs[0].base_range_ms = (0.080, 0.140);
+        runs[0].speed_range_ns = (3.0, 3.0 * BASE_SPREAD);
+        runs[1].speed_range_ns = (3.0, 3.1);
+        assert_eq!(named(&runs), [false, false]);
+        runs[1].speed_range_ns = (3.0, 4.5);
+        assert_eq!(named(&runs), [false, true]);
+        let csv = runs_csv(&cfg, &runs);
+        let header: Vec<&str> = csv.lines().next().expect("header").split(',').collect();
+        assert_eq!(
+            header[header.len() - 4..],
+            [
+                "base_p05_ms",
+                "base_p95_ms",
+                "ns_per_test_p05",
+                "ns_per_test_p95"
+            ]
+        );
+        assert!(csv.lines().last().expect("row").ends_with(",3.000,4.500"));
+    }
+
+    #[test]
+    fn a_wall_window_tracks_the_median_of_its_last_frames() {
+        let mut w = BaseWindow::default();
+        assert_eq!(w.median(), 0.0);
+        for t in 1..=BASE_WINDOW as u64 {
+            w.push((t, 2 * t));
+        }
+        assert_eq!(w.median(), (BASE_WINDOW / 2 + 1) as f64);
+        assert_eq!(w.median_rate(), 0.5);
+        // One slow frame does not move it; a slow stretch of half the window does.
+        w.push((1_000, 4));
+        assert_eq!(w.median(), (BASE_WINDOW / 2 + 2) as f64);
+        assert_eq!(w.median_rate(), 0.5);
+        for _ in 0..BASE_WINDOW / 2 {
+            w.push((1_000, 4));
+        }
+        assert_eq!(w.median(), 1_000.0);
+        assert_eq!(w.median_rate(), 250.0);
     }
 
     #[test]
