@@ -75,7 +75,10 @@ pub struct Collider {
 /// frame ordered or not by the chance of its own timing, and priced reached 0.88-0.94x
 /// round-robin's true P there; at three quarters it orders and reaches 0.79x (C = 5) and 0.43x
 /// (C = 1) with 0.56x the sphere tests. At a tenth of the exact narrow phase (14 us) the ordering
-/// costs more than the whole budget either way and is shed.
+/// costs more than the whole budget either way and is shed. With the ordering at about 13 us
+/// (body pass and pricing, since the pricing pass was made cheaper) a third (28-30 us) orders
+/// every frame; shedding there instead left 0.91x (C = 5) and 0.85x (C = 1) round-robin's true P
+/// against ordering's 0.89-0.95x and 0.48-0.65x (docs/BENCHMARKS.md), so the line stays.
 const PRICED_ORDERING_SHARE: f64 = 0.75;
 
 /// The same line for the paper's priority queue and expected-gain, whose ordering buys less per
