@@ -1404,16 +1404,22 @@ pub fn halving_markdown(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
 mod tests {
     use super::*;
 
-    #[test]
-    fn tiny_protocol_orders_the_bound_below_every_scheduler() {
+    /// The quick protocol cut to N = 150, two seeds and one condition: a fraction of a second.
+    fn tiny(frames: u32, timing_frames: u32, budgets: Vec<Budget>) -> OpenLoopConfig {
         let mut cfg = OpenLoopConfig::quick();
         cfg.ns = vec![150];
         cfg.seeds = vec![1, 2];
-        cfg.frames = vec![(150, 4)];
+        cfg.frames = vec![(150, frames)];
         cfg.warmup = 5;
-        cfg.timing_frames = 2;
-        cfg.budgets = vec![Budget::Tests(0.05), Budget::Tests(0.3)];
+        cfg.timing_frames = timing_frames;
+        cfg.budgets = budgets;
         cfg.conditions.truncate(1);
+        cfg
+    }
+
+    #[test]
+    fn tiny_protocol_orders_the_bound_below_every_scheduler() {
+        let cfg = tiny(4, 2, vec![Budget::Tests(0.05), Budget::Tests(0.3)]);
         let runs = run(&cfg).expect("runs");
         assert_eq!(runs.len(), 2);
         let rows = summarise(&cfg, &runs);
@@ -1443,14 +1449,7 @@ mod tests {
 
     #[test]
     fn the_wall_clock_base_is_reported_and_a_moving_machine_named() {
-        let mut cfg = OpenLoopConfig::quick();
-        cfg.ns = vec![150];
-        cfg.seeds = vec![1, 2];
-        cfg.frames = vec![(150, 6)];
-        cfg.warmup = 5;
-        cfg.timing_frames = 3;
-        cfg.budgets = vec![Budget::Tests(0.1), Budget::Wall(0.3)];
-        cfg.conditions.truncate(1);
+        let cfg = tiny(6, 3, vec![Budget::Tests(0.1), Budget::Wall(0.3)]);
         let mut runs = run(&cfg).expect("runs");
         for r in &runs {
             let (lo, hi) = r.base_range_ms;
