@@ -720,8 +720,7 @@ pub fn run_frames_parts(
     }
     let mut bases = Vec::with_capacity(frames as usize);
     let mut rates = Vec::with_capacity(frames as usize);
-    let exact_ns = window.median();
-    let mut base_ns = exact_ns;
+    let mut base_ns = window.median();
     // Wall-clock runs first see the last timing frame, uncounted (gaze at the screen centre), as
     // a server that has been running would have seen the frame before: they learn what their
     // ordering costs here and keep that frame's witnesses. Sphere-test runs do not, so their rows
@@ -732,7 +731,7 @@ pub fn run_frames_parts(
             let Budget::Wall(x) = budgets[run.budget] else {
                 continue;
             };
-            let fb = FrameBudget::Wall((x * exact_ns).round() as u64);
+            let fb = FrameBudget::Wall((x * base_ns).round() as u64);
             for _ in 0..foveal_engine::collider::LEARN_FRAMES {
                 let mut r = FrameReport::default();
                 let mut prof = PhaseProfile::default();
@@ -903,13 +902,12 @@ pub fn run_frames_parts(
             }
         }
     }
-    let pct = |v: &mut Vec<f64>, q: f64| {
-        v.sort_unstable_by(f64::total_cmp);
-        v.get((q * v.len() as f64) as usize).copied().unwrap_or(0.0)
-    };
-    let base_ms = pct(&mut bases, 0.5) * 1e-6;
-    let base_range_ms = (pct(&mut bases, 0.05) * 1e-6, pct(&mut bases, 0.95) * 1e-6);
-    let speed_range_ns = (pct(&mut rates, 0.05), pct(&mut rates, 0.95));
+    bases.sort_unstable_by(f64::total_cmp);
+    rates.sort_unstable_by(f64::total_cmp);
+    let pct = |v: &[f64], q: f64| foveal_gaze::quantile::nearest_rank(v, q).unwrap_or(0.0);
+    let base_ms = pct(&bases, 0.5) * 1e-6;
+    let base_range_ms = (pct(&bases, 0.05) * 1e-6, pct(&bases, 0.95) * 1e-6);
+    let speed_range_ns = (pct(&rates, 0.05), pct(&rates, 0.95));
     // Means over the frames each condition counted.
     let mut out = Vec::with_capacity(parts.len());
     for (pi, p) in parts.iter().enumerate() {

@@ -536,12 +536,6 @@ impl Collider {
         r.budget_exhausted = meter.was_exhausted();
     }
 
-    /// What the scheduler's ordering of the last frame it ordered took on the frame's clock
-    /// (its pricing pass and sort; the body pass is the profile's `prioritise_ns`).
-    pub fn ordering_ns(&self) -> u64 {
-        self.scheduler.ordering_ns()
-    }
-
     /// Counts per level, Δ and P (section 3) from the pair states; the foveal counts; and, in audit
     /// mode, the exact answer for every deemed pair.
     pub fn measure(
