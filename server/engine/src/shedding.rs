@@ -67,6 +67,12 @@ const TAIL_RISE: f64 = 1.5;
 /// Weight of a cheaper frame's tail per pair in the learnt one (see [`Shedder::learn`]).
 const TAIL_FALL: f64 = 0.02;
 
+/// Frames whose measured tail bounds the learnt one from above (see [`Shedder::learn`]).
+const TAIL_WINDOW: usize = 32;
+
+/// Most of the budget the learnt tail may keep from the narrow phase (see [`Shedder::learn`]).
+const TAIL_MAX_SHARE: f64 = 0.5;
+
 /// Smallest sample of deemed pairs whatever the budget: its standard error is reported. Small
 /// enough for the paper's N and budget (0.1 ms, of which 32 pairs' Δ and P take about 5 us).
 pub const MIN_SAMPLE: u32 = 32;
@@ -90,6 +96,9 @@ pub struct Shedder {
     /// ns per searched pair from the end of the narrow phase's meter to the end of the frame
     /// (deeming, witnesses, response, metrics); None until a frame has measured it.
     tail_ns_per_pair: Option<f64>,
+    /// The last [`TAIL_WINDOW`] frames' measured tail per pair (a ring; 0 where none yet).
+    recent_tails: [f64; TAIL_WINDOW],
+    recent_next: usize,
     /// ns per foveal pair settled by the foveal pass, and the foveal pairs of the last frame.
     foveal_ns_per_pair: Option<f64>,
     foveal_pairs: f64,
@@ -107,6 +116,8 @@ pub struct Pacer {
     foveal_regions: usize,
     calls: usize,
     tail_ns_per_pair: f64,
+    /// Most the tail may keep, ns ([`TAIL_MAX_SHARE`] of the budget).
+    tail_cap: f64,
     last: Option<(u64, usize)>,
 }
 
@@ -132,7 +143,7 @@ impl Pacer {
         self.last = Some((now, pairs));
         let reserve = self.reserve[k];
         self.calls += 1;
-        let tail = self.tail_ns_per_pair * (pairs + dp) as f64;
+        let tail = (self.tail_ns_per_pair * (pairs + dp) as f64).min(self.tail_cap);
         (now + dt + reserve) as f64 + tail <= self.deadline as f64
     }
 }
@@ -203,14 +214,17 @@ impl Shedder {
             foveal_regions: self.foveal_regions,
             calls: 0,
             tail_ns_per_pair: self.tail_ns_per_pair.unwrap_or(0.0),
+            tail_cap: TAIL_MAX_SHARE * budget_ns as f64,
             last: None,
         }
     }
 
-    /// When the narrow phase's meter must stop for a frame ending at `deadline` with `pairs`
-    /// searched pairs: early enough for their tail.
-    pub fn narrow_deadline(&self, deadline: u64, pairs: usize) -> u64 {
-        let tail = self.tail_ns_per_pair.unwrap_or(0.0) * pairs as f64;
+    /// When the narrow phase's meter must stop for a frame ending at `deadline`, with a budget of
+    /// `budget_ns` and `pairs` searched pairs: early enough for their tail, which keeps at most
+    /// [`TAIL_MAX_SHARE`] of the budget.
+    pub fn narrow_deadline(&self, deadline: u64, budget_ns: u64, pairs: usize) -> u64 {
+        let tail = (self.tail_ns_per_pair.unwrap_or(0.0) * pairs as f64)
+            .min(TAIL_MAX_SHARE * budget_ns as f64);
         deadline.saturating_sub(tail as u64)
     }
 
@@ -244,6 +258,15 @@ impl Shedder {
     /// difference: 2-4 ms of a 50 ms frame at 1,000,000 bodies, every 5-20 frames. The price:
     /// after a stall the estimate stays high for longer (it loses a fifth of the excess in ten
     /// frames), so a loaded machine sheds more.
+    ///
+    /// Two bounds keep a stall from starving the narrow phase for seconds. The estimate is never
+    /// above the dearest tail of the last [`TAIL_WINDOW`] frames, so a stall is forgotten that
+    /// many frames after it ends (expensive frames that come back within the window stay
+    /// covered); and the tail keeps at most [`TAIL_MAX_SHARE`] of the budget from the narrow
+    /// phase. Without them a frame's first tail, taken whole, set the estimate for the next
+    /// hundred frames: on a loaded machine the first tail at 3,000 bodies (a cold frame, 7.6 ms
+    /// against the usual 0.2 ms) left no narrow phase in any frame of a 2 ms budget for four
+    /// seconds. At 1,000,000 bodies with 50 ms the tail is 3-12 ms, under either bound.
     pub fn learn(&mut self, searched: usize, tail_ns: u64, pairs: usize) {
         self.learn_shed(searched, tail_ns, pairs);
     }
@@ -311,7 +334,11 @@ impl Shedder {
         }
         if pairs > 0 {
             let cost = tail_ns as f64 / pairs as f64;
-            self.tail_ns_per_pair = Some(envelope(self.tail_ns_per_pair, cost, TAIL_FALL));
+            self.recent_tails[self.recent_next] = cost;
+            self.recent_next = (self.recent_next + 1) % TAIL_WINDOW;
+            let dearest = self.recent_tails.iter().copied().fold(0.0, f64::max);
+            let learnt = envelope(self.tail_ns_per_pair, cost, TAIL_FALL).min(dearest);
+            self.tail_ns_per_pair = Some(learnt);
         }
     }
 }
@@ -388,7 +415,7 @@ mod tests {
         let (pairs, cheap, dear) = (1_000, 1_000_000, 2_000_000);
         for frame in 0..80 {
             if frame % 8 == 7 {
-                let covered = deadline - s.narrow_deadline(deadline, pairs);
+                let covered = deadline - s.narrow_deadline(deadline, deadline, pairs);
                 if frame > 16 {
                     assert!(
                         10 * covered >= 9 * dear,
@@ -475,26 +502,70 @@ mod tests {
     }
 
     /// One slow frame raises the learnt tail by at most TAIL_RISE; a run of them raises it to
-    /// what they cost; a fast frame lowers it slowly.
+    /// what they cost, up to half the budget; fast frames lower it slowly, and a window of them
+    /// forgets the stall.
     #[test]
     fn one_slow_frame_does_not_take_the_next_frames_budget() {
         let mut s = Shedder::default();
-        let deadline = 16_000_000;
+        let (deadline, budget) = (16_000_000, 16_000_000);
         s.learn(0, 1_000_000, 1_000); // 1 us a pair
-        assert_eq!(s.narrow_deadline(deadline, 1_000), deadline - 1_000_000);
+        assert_eq!(
+            s.narrow_deadline(deadline, budget, 1_000),
+            deadline - 1_000_000
+        );
         s.learn(0, 20_000_000, 1_000); // a 20 ms stall
-        assert_eq!(s.narrow_deadline(deadline, 1_000), deadline - 1_500_000);
+        assert_eq!(
+            s.narrow_deadline(deadline, budget, 1_000),
+            deadline - 1_500_000
+        );
         for _ in 0..10 {
             s.learn(0, 20_000_000, 1_000);
         }
         assert_eq!(
-            s.narrow_deadline(deadline, 1_000),
-            0,
-            "a slow machine is learnt"
+            s.narrow_deadline(deadline, budget, 1_000),
+            deadline - budget / 2,
+            "a slow machine is learnt, and keeps half the budget from the narrow phase at most"
         );
+        for frame in 1..TAIL_WINDOW {
+            s.learn(0, 1_000_000, 1_000);
+            let after = s.narrow_deadline(deadline, budget, 1_000);
+            assert_eq!(
+                after,
+                deadline - budget / 2,
+                "forgotten slowly: frame {frame}"
+            );
+        }
         s.learn(0, 1_000_000, 1_000);
-        let after = s.narrow_deadline(deadline, 1_000);
-        assert!(after == 0, "and forgotten slowly: {after}");
+        assert_eq!(
+            s.narrow_deadline(deadline, budget, 1_000),
+            deadline - 1_000_000,
+            "and whole once the window holds no stall"
+        );
+    }
+
+    /// A frame's first tail is taken whole, and a cold first frame can cost thirty times the
+    /// usual: the narrow phase still gets half the budget, and the window's fast frames bring the
+    /// estimate back. The broad phase's pacer keeps no more for the tail than the narrow phase.
+    #[test]
+    fn a_cold_first_frame_does_not_starve_the_next_ones() {
+        let mut s = Shedder::default();
+        let (budget, pairs) = (2_000_000, 3_000);
+        let deadline = 10 * budget;
+        s.learn(0, 7_600_000, pairs);
+        assert_eq!(
+            s.narrow_deadline(deadline, budget, pairs),
+            deadline - budget / 2
+        );
+        let mut pacer = s.pacer(deadline, budget);
+        let reserve = (NARROW_RESERVE * budget as f64) as u64;
+        assert!(pacer.go_on(deadline - budget / 2 - reserve - 1_000, pairs));
+        for _ in 0..TAIL_WINDOW {
+            s.learn(0, 200_000, pairs);
+        }
+        assert_eq!(
+            s.narrow_deadline(deadline, budget, pairs),
+            deadline - 200_000
+        );
     }
 
     /// Regions of the first group hold every pair whose centre is within the fovea, wherever the

@@ -395,7 +395,7 @@ impl Simulation {
         // Under a wall-clock budget the narrow phase stops early enough for the learnt tail
         // (deeming, response, metrics) at every N: the budget covers the whole frame.
         let narrow_budget = match deadline {
-            Some((end, _)) => FrameBudget::Deadline(self.shedder.narrow_deadline(end, pairs)),
+            Some((end, ns)) => FrameBudget::Deadline(self.shedder.narrow_deadline(end, ns, pairs)),
             None => budget,
         };
         r.budget_spent_before_narrow = matches!(narrow_budget, FrameBudget::Deadline(d) if t2 >= d);
