@@ -563,7 +563,9 @@ impl Priced {
                 first[usize::from(witness) * calibration::DIST_BUCKETS
                     + bucket as usize % calibration::DIST_BUCKETS]
             };
-            *k_out = BucketQueue::key(w * r) as u16;
+            // A pair settled before the ordering (its root, see `Collider`) is worth nothing.
+            let open = if p.status.is_open() { 1.0 } else { 0.0 };
+            *k_out = BucketQueue::key(open * w * r) as u16;
         }
         // Counted in a pass of their own, four counters a bucket: the pricing's chain of
         // dependent loads no longer ends in a read-modify-write that the next pair's may wait
