@@ -22,6 +22,8 @@
 //!   every candidate pair, Δ and P over the deemed ones, sampled beyond 25,000) of one frame
 //!   with a fixation, every pair settled exactly or every pair deemed.
 //! - `ordering/body-pass/{500,10000}`: the priced scheduler's body pass alone, per body.
+//! - `ordering/{reset,reset-roots}/{500,10000}`: a frame's reset of the pair states, alone and
+//!   followed by the one-pass root settling of wall-clock frames, per candidate pair.
 //! - `ordering/{round-robin,priced}/{500,10000}`: what a scheduler spends before its first sphere
 //!   test (the pair list, the body pass, pricing), timed as a frame under a budget of 0 sphere
 //!   tests with a fixation; per candidate pair in the throughput line. Under a wall-clock budget
@@ -342,6 +344,31 @@ fn ordering(c: &mut Criterion) {
             });
         }
         let exact_tests = sim.last_report().sphere_tests;
+        {
+            // A frame's reset, alone and followed by the one-pass root settling that wall-clock
+            // frames of round-robin and priced start with (per candidate pair).
+            let input = sim.frame_input();
+            let mut np = NarrowPhase::default();
+            g.throughput(Throughput::Elements(input.candidates.len() as u64));
+            g.bench_function(BenchmarkId::new("reset", n), |b| {
+                b.iter(|| {
+                    np.reset(input.candidates);
+                    black_box(np.pairs.len())
+                })
+            });
+            g.bench_function(BenchmarkId::new("reset-roots", n), |b| {
+                b.iter(|| {
+                    np.reset(input.candidates);
+                    black_box(np.settle_separate_roots(
+                        input.tree,
+                        input.world,
+                        0,
+                        usize::MAX,
+                        &mut |_| true,
+                    ))
+                })
+            });
+        }
         {
             // The same frame resolved exactly, pair after pair: the sphere test's own cost.
             let mut col = Collider::new(&exact(n), sim.tree(), sim.viewer()).expect("valid");

@@ -208,8 +208,9 @@ impl Initial {
         self.order.get(self.next).map_or(0, |&(_, k)| k as usize)
     }
 
-    /// Sort the pairs by `keys` (counted in `counts` over `span`) into `order`.
-    fn sort(&mut self) {
+    /// Sort the pairs by `keys` (counted in `counts` over `span`) into `order`; key `j` is pair
+    /// `index[j]`'s where an index is given, pair `j`'s otherwise.
+    fn sort(&mut self, index: Option<&[u32]>) {
         let (lo, hi) = self.span;
         self.next = 0;
         if lo > hi {
@@ -226,9 +227,10 @@ impl Initial {
         }
         // Only the length: the sort writes every entry once.
         self.order.resize(self.keys.len(), (0, 0));
-        for (i, &k) in self.keys.iter().enumerate().rev() {
+        for (j, &k) in self.keys.iter().enumerate().rev() {
             let slot = &mut counts[k as usize - lo];
-            self.order[*slot as usize] = (i as u32, k);
+            let i = index.map_or(j as u32, |index| index[j]);
+            self.order[*slot as usize] = (i, k);
             *slot += 1;
         }
         counts.iter_mut().for_each(|c| *c = 0);
@@ -245,6 +247,8 @@ pub struct Priced {
     weight: Vec<f32>,
     /// Per pair: its centre-distance bucket.
     dist: Vec<u8>,
+    /// The open pairs' indices, where only they are priced (see [`Self::price`]).
+    open: Vec<u32>,
     /// Per calibration bin: value per unit weight (gain over price, by the switches), and
     /// whether it is the horizons' rate ([`Bin::rate`]; sphere-test budgets) or the whole
     /// descent's mean (wall-clock budgets, see [`Scheduler::run`]).
@@ -425,7 +429,7 @@ impl Priced {
                 .iter()
                 .all(|p| !p.status.is_open() || p.stage() == 0)
         );
-        self.price::<REMEMBER>(np, work);
+        self.price::<REMEMBER>(np, work, meter.counts_time());
         self.ordering_ns = meter.now_ns().saturating_sub(started);
         'work: loop {
             // The higher of the sorted first prices and the pairs put back; on a tie the put-back
@@ -486,20 +490,27 @@ impl Priced {
     /// its two bodies' (a few degrees apart at most), and the squared centre distance keys the
     /// calibrated state: one pass writing sequential arrays and a histogram, without a per-pair
     /// projection, division, square root or queue push.
-    fn price<const REMEMBER: bool>(&mut self, np: &NarrowPhase, work: &Work<'_>) {
+    ///
+    /// With `open_only` (wall-clock frames, whose root-separated pairs are settled before the
+    /// ordering, about 60% of them at the paper's N: see `Collider`), the open pairs are listed
+    /// first and only they are priced.
+    fn price<const REMEMBER: bool>(&mut self, np: &NarrowPhase, work: &Work<'_>, open_only: bool) {
         let gaze = self.options.gaze && work.view.is_some();
         let full = work.priorities.body_records().len() == work.world.len();
         // The switches are fixed for the frame: as constants, the pass has no branch on them
         // per pair. Under a wall-clock budget this pass is paid from the tests' time, so every
         // nanosecond a pair counts (see "The priced ordering made cheaper" in BENCHMARKS.md).
-        match (gaze, full) {
-            (true, true) => self.price_with::<REMEMBER, true, true>(np, work),
-            (false, true) => self.price_with::<REMEMBER, false, true>(np, work),
-            (_, false) => self.price_with::<REMEMBER, false, false>(np, work),
+        match (gaze, full, open_only && !REMEMBER) {
+            (true, true, false) => self.price_with::<REMEMBER, true, true, false>(np, work),
+            (false, true, false) => self.price_with::<REMEMBER, false, true, false>(np, work),
+            (_, false, false) => self.price_with::<REMEMBER, false, false, false>(np, work),
+            (true, true, true) => self.price_with::<REMEMBER, true, true, true>(np, work),
+            (false, true, true) => self.price_with::<REMEMBER, false, true, true>(np, work),
+            (_, false, true) => self.price_with::<REMEMBER, false, false, true>(np, work),
         }
     }
 
-    fn price_with<const REMEMBER: bool, const GAZE: bool, const FULL: bool>(
+    fn price_with<const REMEMBER: bool, const GAZE: bool, const FULL: bool, const OPEN: bool>(
         &mut self,
         np: &NarrowPhase,
         work: &Work<'_>,
@@ -522,15 +533,28 @@ impl Priced {
         let remembered_out = &mut self.remembered;
         let table = &self.buckets;
         let init = &mut self.initial;
-        init.clear(np.pairs.len());
+        // The open pairs' indices, written without a branch per pair (which of them are open is
+        // as good as random).
+        let m = if OPEN {
+            let open = &mut self.open;
+            open.resize(np.pairs.len(), 0);
+            let mut len = 0;
+            for (i, p) in np.pairs.iter().enumerate() {
+                open[len] = i as u32;
+                len += usize::from(p.status.is_open());
+            }
+            open.truncate(len);
+            len
+        } else {
+            np.pairs.len()
+        };
+        init.clear(m);
         let counts = &mut init.counts[..BUCKETS];
         let (mut lo, mut hi) = (BUCKETS, 0);
-        let outs = self
-            .weight
-            .iter_mut()
-            .zip(self.dist.iter_mut())
-            .zip(init.keys.iter_mut());
-        for (i, (p, ((w_out, d_out), k_out))) in np.pairs.iter().zip(outs).enumerate() {
+        let (weight, dist, open) = (&mut self.weight, &mut self.dist, &self.open);
+        for (j, k_out) in init.keys.iter_mut().enumerate() {
+            let i = if OPEN { open[j] as usize } else { j };
+            let p = &np.pairs[i];
             let (a, b) = (p.a as usize, p.b as usize);
             let (w, d2) = if FULL {
                 let (ra, rb) = (records[a], records[b]);
@@ -547,8 +571,8 @@ impl Priced {
                 (1.0, d.length_squared() as f32 * inv_d2)
             };
             let bucket = table.bucket(d2);
-            *w_out = w;
-            *d_out = bucket;
+            weight[i] = w;
+            dist[i] = bucket;
             let witness = np.has_witness(i);
             let remembered = if REMEMBER {
                 let t = memory.get(p.a, p.b);
@@ -563,9 +587,7 @@ impl Priced {
                 first[usize::from(witness) * calibration::DIST_BUCKETS
                     + bucket as usize % calibration::DIST_BUCKETS]
             };
-            // A pair settled before the ordering (its root, see `Collider`) is worth nothing.
-            let open = if p.status.is_open() { 1.0 } else { 0.0 };
-            *k_out = BucketQueue::key(open * w * r) as u16;
+            *k_out = BucketQueue::key(w * r) as u16;
         }
         // Counted in a pass of their own, four counters a bucket: the pricing's chain of
         // dependent loads no longer ends in a read-modify-write that the next pair's may wait
@@ -589,7 +611,7 @@ impl Priced {
             }
         }
         init.span = (lo, hi);
-        init.sort();
+        init.sort(if OPEN { Some(&self.open[..]) } else { None });
     }
 }
 
@@ -715,15 +737,29 @@ mod tests {
             init.counts[k] += 1;
             init.span = (init.span.0.min(k), init.span.1.max(k));
         }
-        init.sort();
+        init.sort(None);
         // A second sort over the same pairs finds every count back at zero.
         assert!(init.counts.iter().all(|&c| c == 0));
         let from_queue: Vec<u32> = std::iter::from_fn(|| q.pop()).collect();
         let from_sort: Vec<u32> = init.order.iter().map(|&(i, _)| i).collect();
         assert_eq!(from_sort, from_queue);
+        // The open pairs only (every third settled), keyed by position in their list: the
+        // queue's order without the settled ones.
+        let open: Vec<u32> = (0..values.len() as u32).filter(|i| i % 3 != 0).collect();
+        init.clear(open.len());
+        for (j, &i) in open.iter().enumerate() {
+            let k = BucketQueue::key(values[i as usize]);
+            init.keys[j] = k as u16;
+            init.counts[k] += 1;
+            init.span = (init.span.0.min(k), init.span.1.max(k));
+        }
+        init.sort(Some(&open));
+        let from_open: Vec<u32> = init.order.iter().map(|&(i, _)| i).collect();
+        let expected: Vec<u32> = from_queue.iter().copied().filter(|i| i % 3 != 0).collect();
+        assert_eq!(from_open, expected);
         assert_eq!(
             init.top_key(),
-            BucketQueue::key(values[from_queue[0] as usize])
+            BucketQueue::key(values[expected[0] as usize])
         );
         init.next = init.order.len();
         assert_eq!(init.top_key(), 0);
