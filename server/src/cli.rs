@@ -50,10 +50,11 @@ pub struct Cli {
     /// error a step is expected to remove per sphere test (probabilities and costs calibrated on
     /// exact runs; under a sphere-test budget, a pair's cost last frame where it is remembered);
     /// on identical frames it reaches 0.81-1.00 of the reduction a clairvoyant schedule could
-    /// make over round-robin under sphere-test budgets. A wall-clock frame too
-    /// short to pay for any ordering runs round-robin nearest the fixation first, which leaves
-    /// 0.21-0.67x round-robin's perceived error at a tenth of the exact narrow phase at N = 10,000
-    /// (docs/BENCHMARKS.md).
+    /// make over round-robin under sphere-test budgets. A wall-clock frame settles the pairs
+    /// apart at the root in one pass first; one too short to pay for ordering the rest resolves
+    /// the pairs within 5 degrees of the fixation whole, nearest first, then runs round-robin:
+    /// at a tenth of the exact narrow phase this leaves 0.36-0.89x round-robin's perceived error
+    /// at N = 10,000, at a third (ordered) 0.01-0.36x (docs/BENCHMARKS.md).
     #[arg(long, env = "FOVEAL_SCHEDULER", default_value = "priced", value_parser = parse_scheduler)]
     pub scheduler: SchedulerKind,
     /// Worker threads for the frame's phases (1..=64; default: the machine's cores, at most 64):

@@ -359,13 +359,7 @@ fn ordering(c: &mut Criterion) {
             g.bench_function(BenchmarkId::new("reset-roots", n), |b| {
                 b.iter(|| {
                     np.reset(input.candidates);
-                    black_box(np.settle_separate_roots(
-                        input.tree,
-                        input.world,
-                        0,
-                        usize::MAX,
-                        &mut |_| true,
-                    ))
+                    black_box(np.settle_separate_roots(input.tree, input.world, &mut |_| true))
                 })
             });
         }

@@ -436,16 +436,17 @@ impl Collider {
         // same order (less the pairs with a witness, stepped in the round); the priced order
         // puts them first anyway (each the most false-positive error removed for one test). The
         // paper's priority schedulers rank every pair's first test by priority, and sequential
-        // resolution takes each pair whole in turn: both orders this would change.
-        if meter.counts_time()
+        // resolution takes each pair whole in turn: both orders this would change, so they take
+        // the pass only in frames that shed their order for round-robin (below).
+        let roots_first = meter.counts_time()
             && matches!(
                 self.config.scheduler,
                 crate::config::SchedulerKind::RoundRobin | crate::config::SchedulerKind::Priced
-            )
-        {
+            );
+        if roots_first {
             let roots_start = clock.now_ns();
             self.narrow
-                .settle_separate_roots(input.tree, input.world, 0, n, &mut |tests| {
+                .settle_separate_roots(input.tree, input.world, &mut |tests| {
                     !meter.exhausted(tests)
                 });
             pass_ns += clock.now_ns().saturating_sub(roots_start);
@@ -507,18 +508,29 @@ impl Collider {
             }
         } else {
             self.scheduler.forget();
-            // Shed: round-robin, nearest the fixation first where the broad phase has columns
-            // to find those pairs by and the scheduler is one that uses gaze (see
-            // `schedule::rings`), in candidate order otherwise. The placing costs a few dozen
-            // flops per column and a pass over the x of the bodies of the columns near the
-            // fixation; a frame too short to pay for it (learnt like the ordering's cost, see
-            // `CostGate`) runs plain round-robin.
+            // Shed: the root-separated pairs settled in one pass (above, or here for the
+            // schedulers whose order it would have changed), then the gaze rings where the broad
+            // phase has columns to find the pairs by and the scheduler is one that uses gaze (see
+            // `schedule::rings`): the pairs within the fovea resolved whole, nearest the fixation
+            // first, then round-robin, the outer ring first; round-robin in candidate order
+            // otherwise. The placing costs a few dozen flops per column and a pass over the x of
+            // the bodies of the columns near the fixation; a frame too short to pay for it
+            // (learnt like the ordering's cost, see `CostGate`) runs plain round-robin.
+            if !roots_first && meter.counts_time() {
+                self.narrow
+                    .settle_separate_roots(input.tree, input.world, &mut |tests| {
+                        !meter.exhausted(tests)
+                    });
+            }
             let rings_affordable = self.rings_cost.allows(1.0, || {
                 meter.wall_left_ns().map(|left| RINGS_SHARE * left as f64)
             });
-            let columns = input
-                .columns
-                .filter(|c| self.config.scheduler.needs_priority() && c.covers(n));
+            // The gaze-blind ablation of the priced scheduler (`PricedOptions::gaze` off) keeps
+            // gaze out of its shed frames too.
+            let uses_gaze = self.config.scheduler.needs_priority()
+                && (self.config.scheduler != crate::config::SchedulerKind::Priced
+                    || self.config.priced.gaze);
+            let columns = input.columns.filter(|c| uses_gaze && c.covers(n));
             match (columns, fixation_px) {
                 (Some(columns), Some(px)) if rings_affordable => {
                     self.rings_cost.record(true);
@@ -739,21 +751,33 @@ mod tests {
     use crate::budget::Ticking;
     use crate::{BudgetSpec, FrozenClock, SchedulerKind, Simulation};
 
+    /// The default config at `bodies` bodies, exact, and its scene after `frames` exact frames
+    /// (so that the pairs have witnesses and the bodies have moved).
+    fn stepped_scene(bodies: u32, frames: usize) -> (SimConfig, Simulation) {
+        let mut cfg = SimConfig::default();
+        cfg.scene.bodies = bodies;
+        cfg.budget = BudgetSpec::Exact;
+        let mut sim = Simulation::new(cfg.clone()).expect("valid");
+        for _ in 0..frames {
+            sim.step(None, &FrozenClock);
+        }
+        (cfg, sim)
+    }
+
     /// On a clock that advances 1 µs at every read the ordering, a handful of reads, costs far
     /// more than a 2 µs frame can pay.
     #[test]
     fn shed_frames_take_the_gaze_rings_and_sphere_test_budgets_never_do() {
-        let mut cfg = SimConfig::default();
-        cfg.scene.bodies = 200;
-        cfg.budget = BudgetSpec::Exact;
-        let mut sim = Simulation::new(cfg.clone()).expect("valid");
-        for _ in 0..5 {
-            sim.step(None, &FrozenClock);
-        }
+        let (mut cfg, sim) = stepped_scene(200, 5);
         let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 1_000);
         let fixation = Some(Fixation::at(0.5, 0.5));
-        for kind in [SchedulerKind::Priced, SchedulerKind::RoundRobin] {
+        for (kind, gaze) in [
+            (SchedulerKind::Priced, true),
+            (SchedulerKind::Priced, false),
+            (SchedulerKind::RoundRobin, true),
+        ] {
             cfg.scheduler = kind;
+            cfg.priced.gaze = gaze;
             let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
             let mut rings = 0;
             for _ in 0..LEARN_FRAMES + 5 {
@@ -767,8 +791,9 @@ mod tests {
                 rings += usize::from(r.gaze_rings);
             }
             // The priced collider sheds its ordering here and places the rings (the first shed
-            // frames whatever their cost, to learn it); gaze-blind round-robin never does.
-            if kind == SchedulerKind::Priced {
+            // frames whatever their cost, to learn it); gaze-blind round-robin and the priced
+            // scheduler's gaze-blind ablation never do.
+            if kind == SchedulerKind::Priced && gaze {
                 assert!(rings >= LEARN_FRAMES as usize, "{rings}");
             } else {
                 assert_eq!(rings, 0);
@@ -793,13 +818,7 @@ mod tests {
     /// under a sphere-test budget nobody does. On a clock that advances 1 µs a read, 40 µs.
     #[test]
     fn wall_clock_frames_settle_every_separate_root_first() {
-        let mut cfg = SimConfig::default();
-        cfg.scene.bodies = 500;
-        cfg.budget = BudgetSpec::Exact;
-        let mut sim = Simulation::new(cfg.clone()).expect("valid");
-        for _ in 0..5 {
-            sim.step(None, &FrozenClock);
-        }
+        let (mut cfg, sim) = stepped_scene(500, 5);
         let input = sim.frame_input();
         let root = sim.tree().root_radius();
         let separate: Vec<bool> = input
@@ -841,6 +860,27 @@ mod tests {
                 }
             }
         }
+        // A frame of the paper's scheduler that sheds its ordering runs round-robin: it takes
+        // the pass too. 8 µs: the ordering (learnt on the first frames) does not fit, the pass
+        // does.
+        cfg.scheduler = SchedulerKind::PriorityOnly;
+        let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 1_000);
+        let mut shed = 0;
+        for _ in 0..LEARN_FRAMES + 8 {
+            let r = col.evaluate(&input, fixation, FrameBudget::Wall(8_000), &clock);
+            if r.ordering_shed {
+                shed += 1;
+                let settled = col
+                    .pairs()
+                    .iter()
+                    .zip(&separate)
+                    .filter(|(p, s)| **s && p.status == crate::narrow_phase::PairStatus::Separate)
+                    .count();
+                assert_eq!(settled, far);
+            }
+        }
+        assert!(shed > 0);
     }
 
     /// `fovea_first`: under a wall-clock budget the priced order alone leaves some pairs within
@@ -849,13 +889,7 @@ mod tests {
     /// the pass's count is the metrics' own. Sphere-test budgets are unchanged by the option.
     #[test]
     fn fovea_first_settles_every_foveal_pair_of_a_wall_clock_frame() {
-        let mut cfg = SimConfig::default();
-        cfg.scene.bodies = 2_000;
-        cfg.budget = BudgetSpec::Exact;
-        let mut sim = Simulation::new(cfg.clone()).expect("valid");
-        for _ in 0..10 {
-            sim.step(None, &FrozenClock);
-        }
+        let (mut cfg, sim) = stepped_scene(2_000, 10);
         let input = sim.frame_input();
         let fixation = Some(Fixation::at(0.45, 0.55));
         let fovea = Fovea::new(input.viewer, input.viewer.to_pixels(0.45, 0.55), FOVEAL_DEG);
@@ -869,7 +903,7 @@ mod tests {
         let mut plain = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
         cfg.fovea_first = true;
         let mut first = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
-        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 100);
+        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 1_000);
         let mut shown = 0;
         for budget_us in [5, 20, 50, 100, 200, 400, 800] {
             let budget = FrameBudget::Wall(budget_us * 1_000);
@@ -902,14 +936,8 @@ mod tests {
 
     #[test]
     fn an_unaffordable_ordering_is_shed_and_measured_again_every_probe() {
-        let mut cfg = SimConfig::default();
-        cfg.scene.bodies = 200;
-        cfg.budget = BudgetSpec::Exact;
+        let (mut cfg, sim) = stepped_scene(200, 5);
         cfg.scheduler = SchedulerKind::Priced;
-        let mut sim = Simulation::new(cfg.clone()).expect("valid");
-        for _ in 0..5 {
-            sim.step(None, &FrozenClock);
-        }
         let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
         let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 1_000);
         let fixation = Some(Fixation::at(0.5, 0.5));

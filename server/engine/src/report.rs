@@ -109,11 +109,12 @@ pub struct FrameReport {
     /// The budget ran out before every pair was resolved.
     pub budget_exhausted: bool,
     /// The wall-clock budget could not pay for the scheduler's ordering: this frame was scheduled
-    /// round-robin instead, nearest the fixation first where the broad phase locates its pairs by
-    /// column and that placing fitted the time left (see `schedule::rings`), gaze-blind otherwise.
+    /// by the gaze rings instead where the broad phase locates its pairs by column and that
+    /// placing fitted the time left (see `schedule::rings`), gaze-blind round-robin otherwise.
     pub ordering_shed: bool,
-    /// Of the frames whose ordering was shed, those scheduled round-robin nearest the fixation
-    /// first (see `schedule::rings`).
+    /// Of the frames whose ordering was shed, those scheduled by the gaze rings: the pairs within
+    /// the fovea resolved whole, nearest the fixation first, then round-robin over the rest, the
+    /// outer ring first (see `schedule::rings`).
     pub gaze_rings: bool,
     /// The wall-clock budget was spent before the narrow phase could start: integration and the
     /// broad phase (with the learnt tail kept for response and metrics) took all of it, so no

@@ -13,16 +13,23 @@
 //! rings, and each ring's x-window is counted off the column's sorted x, which gives each ring's
 //! pairs as a range or two of the candidate list per run of the column.
 //!
-//! The rings are nested squares around the fixation ([`RINGS_DEG`]), and the order is: every
-//! round of round-robin takes the rings nearest first, then every other pair. Within a round, a
-//! pair is still stepped one level, so the cheap root tests that settle most pairs come before any
-//! pair's second level, as in plain round-robin (resolving the near pairs whole first was
-//! measured worse at a third of the exact narrow phase with C = 5 degrees: deep descents into
-//! true collisions remove no error). The first round runs straight off the ranges; only pairs
-//! left open are queued for the next.
+//! The rings are nested squares around the fixation ([`RINGS_DEG`]). The pairs of the two rings
+//! within the fovea's 5 degrees are resolved whole first, nearest the fixation first (by the
+//! screen distance of the pair's centre); then every round of round-robin takes the outer ring,
+//! then every other pair, a pair stepped one level a round. Why whole: a wall-clock frame of
+//! round-robin or the priced scheduler has already settled every root-separated pair in one pass
+//! (`NarrowPhase::settle_separate_roots`), so every pair left open overlaps at the root and needs
+//! a descent of about 20 tests to settle; stepped a level a round, such frames settled almost none
+//! of them, and ended on a plateau of true P that a third of the exact narrow phase did not
+//! lower below a tenth's. Resolved whole (without storing and reloading its list at every level),
+//! the pairs a viewer sees are settled, and the same time does more tests. Before the root pass,
+//! stepping was better (deep descents into true collisions remove no error, and the root tests
+//! came first): measured in docs/BENCHMARKS.md. The first round of the rest runs straight off
+//! the ranges; only pairs left open are queued for the next.
 //!
 //! Cost: a few dozen flops per column and a pass over the x of the bodies of the columns whose band
-//! meets the outer ring, no per-pair work before the first test. The order is a heuristic: every
+//! meets the outer ring, and a projection of each open pair of the inner two rings (a few dozen
+//! pairs at the paper's N) to sort them. The order is a heuristic: every
 //! pair's test is exact whichever ring it is in, and every pair is in exactly one place of the
 //! order.
 
@@ -41,6 +48,11 @@ use crate::perception::Viewer;
 pub const RINGS_DEG: [f64; 3] = [2.0, 5.0, 12.0];
 
 const RINGS: usize = RINGS_DEG.len();
+
+/// The rings whose pairs are resolved whole, nearest the fixation first, before any other pair
+/// is stepped: the two within the fovea's 5 degrees ([`crate::report::FOVEAL_DEG`]). Measured
+/// open loop against none, the inner ring alone and all three (docs/BENCHMARKS.md).
+const WHOLE_RINGS: usize = 2;
 
 /// Ranges of the candidate list, written without a branch per range.
 #[derive(Debug, Default)]
@@ -85,6 +97,9 @@ pub struct Rings {
     ranges: [Ranges; RINGS + 1],
     /// Pairs left open by the first round, for the next rounds.
     queue: Vec<u32>,
+    /// The open pairs of the rings resolved whole, keyed by their squared distance on screen
+    /// from the fixation.
+    near: Vec<(u64, u32)>,
     /// Clock time of the last run's placing.
     setup_ns: u64,
 }
@@ -109,7 +124,8 @@ impl Rings {
     }
 
     /// Place the candidates (laid out by `columns`) in rings around `fixation_px` widened by
-    /// `uncertainty_deg`, and run round-robin over them, each round nearest first, until every
+    /// `uncertainty_deg`; resolve the open pairs of the inner [`WHOLE_RINGS`] whole, nearest
+    /// first, then run round-robin over the rest, each round the outer ring first, until every
     /// pair is settled or `meter` says stop. False, and nothing done, if `columns` does not
     /// describe `np`'s pairs (another frame's index).
     #[allow(clippy::too_many_arguments)]
@@ -131,7 +147,30 @@ impl Rings {
         self.setup_ns = meter.now_ns().saturating_sub(start);
         // The first round straight off the ranges: no queue of every pair is built.
         self.queue.clear();
-        for ranges in &self.ranges {
+        // The pairs of the rings about the fovea, whole and nearest the fixation first.
+        let pos = &work.world.position;
+        self.near.clear();
+        for ranges in &self.ranges[..WHOLE_RINGS] {
+            for &[lo, hi] in ranges.as_slice() {
+                for i in lo..hi {
+                    let p = &np.pairs[i as usize];
+                    if p.status.is_open() {
+                        let s = viewer.project((pos[p.a as usize] + pos[p.b as usize]) * 0.5);
+                        let (dx, dy) = (s[0] - fixation_px[0], s[1] - fixation_px[1]);
+                        // Non-negative, so the bits order as the values do.
+                        self.near.push(((dx * dx + dy * dy).to_bits(), i));
+                    }
+                }
+            }
+        }
+        self.near.sort_unstable();
+        for &(_, i) in &self.near {
+            if meter.exhausted(np.tests) {
+                return true;
+            }
+            np.resolve_fully(i as usize, work.tree, work.world);
+        }
+        for ranges in &self.ranges[WHOLE_RINGS..] {
             for &[lo, hi] in ranges.as_slice() {
                 for i in lo..hi {
                     if meter.exhausted(np.tests) {
@@ -351,7 +390,7 @@ mod tests {
     }
 
     #[test]
-    fn the_first_round_steps_the_inner_ring_before_any_other_pair() {
+    fn the_fovea_is_resolved_whole_nearest_first_then_the_outer_ring_is_stepped() {
         let sim = scene(500, 4);
         let input = sim.frame_input();
         let columns = input.columns.expect("sweep and prune at this N");
@@ -367,19 +406,71 @@ mod tests {
         let mut rings = Rings::default();
         rings.place(columns, input.viewer, px, 0.0);
         let at = placement(&rings, input.candidates.len());
-        let inner = rings.placed()[0];
-        assert!(inner > 0);
-        // A first step is one sphere test (a root test, or last frame's witness): a budget of as
-        // many tests as the inner ring has pairs steps exactly those.
+        // The foveal rings' pairs by the screen distance of their centre from the fixation,
+        // each with its exact state and the tests a whole descent takes, one by one.
+        let pos = &input.world.position;
+        let mut order: Vec<(f64, usize)> = (0..input.candidates.len())
+            .filter(|&i| at[i][0] < WHOLE_RINGS)
+            .map(|i| {
+                let (a, b) = input.candidates[i];
+                let s = input
+                    .viewer
+                    .project((pos[a as usize] + pos[b as usize]) * 0.5);
+                ((s[0] - px[0]).powi(2) + (s[1] - px[1]).powi(2), i)
+            })
+            .collect();
+        order.sort_by(|x, y| x.partial_cmp(y).expect("finite"));
+        assert!(order.len() >= 4, "{} foveal pairs", order.len());
+        let whole: Vec<(PairStatus, u64)> = order
+            .iter()
+            .map(|&(_, i)| {
+                let mut np = NarrowPhase::default();
+                np.reset(input.candidates);
+                np.resolve_fully(i, input.tree, input.world);
+                (np.pairs[i].status, np.tests)
+            })
+            .collect();
+        let clock = FrozenClock;
+        // A budget of exactly the first half's descents resolves those pairs and nothing else.
+        let half = order.len() / 2;
+        let budget: u64 = whole[..half].iter().map(|w| w.1).sum();
         let mut np = NarrowPhase::default();
         np.reset(input.candidates);
-        let clock = FrozenClock;
-        let mut meter = Meter::new(FrameBudget::Tests(inner as u64), &clock);
+        let mut meter = Meter::new(FrameBudget::Tests(budget), &clock);
         assert!(rings.run(&mut np, &work, columns, input.viewer, px, 0.0, &mut meter));
-        assert_eq!(np.tests, inner as u64);
+        assert_eq!(np.tests, budget);
+        let rank: std::collections::HashMap<usize, usize> = order
+            .iter()
+            .enumerate()
+            .map(|(k, &(_, i))| (i, k))
+            .collect();
         for (i, p) in np.pairs.iter().enumerate() {
+            match rank.get(&i) {
+                Some(&k) if k < half => {
+                    assert!(!p.status.is_open(), "pair {i}, {k}th nearest, left open");
+                    assert_eq!(p.status, whole[k].0, "pair {i}");
+                }
+                _ => assert_eq!(p.status, PairStatus::Untested, "pair {i} tested"),
+            }
+        }
+        // Every foveal descent and one test for each pair of the outer ring: the fovea settled
+        // exactly, the outer ring stepped, the rest untouched.
+        let outer = rings.placed()[WHOLE_RINGS];
+        assert!(outer > 0);
+        let budget: u64 = whole.iter().map(|w| w.1).sum::<u64>() + outer as u64;
+        let mut np = NarrowPhase::default();
+        np.reset(input.candidates);
+        let mut meter = Meter::new(FrameBudget::Tests(budget), &clock);
+        assert!(rings.run(&mut np, &work, columns, input.viewer, px, 0.0, &mut meter));
+        assert_eq!(np.tests, budget);
+        for (i, p) in np.pairs.iter().enumerate() {
+            let ring = at[i][0];
             let stepped = p.status != PairStatus::Untested;
-            assert_eq!(stepped, at[i][0] == 0, "pair {i} in ring {}", at[i][0]);
+            if let Some(&k) = rank.get(&i) {
+                assert_eq!(p.status, whole[k].0, "foveal pair {i}");
+            } else {
+                assert_eq!(stepped, ring == WHOLE_RINGS, "pair {i} in ring {ring}");
+            }
         }
     }
 }
