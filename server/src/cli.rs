@@ -53,8 +53,8 @@ pub struct Cli {
     /// make over round-robin under sphere-test budgets. A wall-clock frame settles the pairs
     /// apart at the root in one pass first; one too short to pay for ordering the rest resolves
     /// the pairs within 5 degrees of the fixation whole, nearest first, then runs round-robin:
-    /// at a tenth of the exact narrow phase this leaves 0.36-0.89x round-robin's perceived error
-    /// at N = 10,000, at a third (ordered) 0.01-0.36x (docs/BENCHMARKS.md).
+    /// at a tenth of the exact narrow phase this leaves 0.35-0.89x round-robin's perceived error
+    /// at N = 10,000, at a third (mostly ordered) 0.01-0.40x (docs/BENCHMARKS.md).
     #[arg(long, env = "FOVEAL_SCHEDULER", default_value = "priced", value_parser = parse_scheduler)]
     pub scheduler: SchedulerKind,
     /// Worker threads for the frame's phases (1..=64; default: the machine's cores, at most 64):
