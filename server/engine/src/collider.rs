@@ -832,6 +832,14 @@ mod tests {
             .collect();
         let far = separate.iter().filter(|&&s| s).count();
         assert!(far > input.candidates.len() / 3, "{far}");
+        // Of those, the pairs a collider's last frame settled separate.
+        let settled = |col: &Collider| {
+            col.pairs()
+                .iter()
+                .zip(&separate)
+                .filter(|(p, s)| **s && p.status == crate::narrow_phase::PairStatus::Separate)
+                .count()
+        };
         let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 1_000);
         let fixation = Some(Fixation::at(0.5, 0.5));
         for kind in [
@@ -844,12 +852,7 @@ mod tests {
             for budget in [FrameBudget::Wall(40_000), FrameBudget::Tests(50)] {
                 let r = col.evaluate(&input, fixation, budget, &clock);
                 assert!(r.budget_exhausted, "{kind:?} {budget:?}");
-                let settled = col
-                    .pairs()
-                    .iter()
-                    .zip(&separate)
-                    .filter(|(p, s)| **s && p.status == crate::narrow_phase::PairStatus::Separate)
-                    .count();
+                let settled = settled(&col);
                 let takes_pass =
                     kind != SchedulerKind::PriorityOnly && matches!(budget, FrameBudget::Wall(_));
                 if takes_pass {
@@ -871,13 +874,7 @@ mod tests {
             let r = col.evaluate(&input, fixation, FrameBudget::Wall(8_000), &clock);
             if r.ordering_shed {
                 shed += 1;
-                let settled = col
-                    .pairs()
-                    .iter()
-                    .zip(&separate)
-                    .filter(|(p, s)| **s && p.status == crate::narrow_phase::PairStatus::Separate)
-                    .count();
-                assert_eq!(settled, far);
+                assert_eq!(settled(&col), far);
             }
         }
         assert!(shed > 0);
