@@ -112,9 +112,10 @@ pub struct FrameReport {
     /// by the gaze rings instead where the broad phase locates its pairs by column and that
     /// placing fitted the time left (see `schedule::rings`), gaze-blind round-robin otherwise.
     pub ordering_shed: bool,
-    /// Of the frames whose ordering was shed, those scheduled by the gaze rings: the pairs within
-    /// the fovea resolved whole, nearest the fixation first, then round-robin over the rest, the
-    /// outer ring first (see `schedule::rings`).
+    /// The frame placed the gaze rings and settled the pairs within the fovea through them,
+    /// whole and nearest the fixation first (see `schedule::rings`): a frame of the priced
+    /// scheduler before its ordering, and any frame whose ordering was shed as its whole
+    /// schedule (round-robin over the rest after the fovea, the outer ring first).
     pub gaze_rings: bool,
     /// The wall-clock budget was spent before the narrow phase could start: integration and the
     /// broad phase (with the learnt tail kept for response and metrics) took all of it, so no

@@ -38,6 +38,8 @@ use crate::broad_phase::{Columns, RUNS};
 use crate::budget::Meter;
 use crate::narrow_phase::{NarrowPhase, StepOutcome};
 use crate::perception::Viewer;
+use crate::sphere_tree::SphereTree;
+use crate::world::World;
 
 /// Ring half-widths, degrees of visual angle, nearest first: about the fovea; where the steep end
 /// of the scheduling model's fall-off (F2, exp(-e / C), with C = 1 degree) is down to 1%; and
@@ -139,16 +141,74 @@ impl Rings {
         uncertainty_deg: f64,
         meter: &mut Meter<'_>,
     ) -> bool {
+        let (tree, world) = (work.tree, work.world);
+        match self.fovea(
+            np,
+            tree,
+            world,
+            columns,
+            viewer,
+            fixation_px,
+            uncertainty_deg,
+            meter,
+        ) {
+            None => false,
+            Some(false) => true,
+            Some(true) => {
+                self.rest(np, work, meter);
+                true
+            }
+        }
+    }
+
+    /// The rest of [`Self::run`] after [`Self::fovea`]: round-robin over the pairs outside the
+    /// inner rings as last placed, each round the outer ring first, until every pair is settled
+    /// or `meter` says stop.
+    pub fn rest(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
+        // The first round straight off the ranges: no queue of every pair is built.
+        self.queue.clear();
+        for ranges in &self.ranges[WHOLE_RINGS..] {
+            for &[lo, hi] in ranges.as_slice() {
+                for i in lo..hi {
+                    if meter.exhausted(np.tests) {
+                        return;
+                    }
+                    if np.pairs[i as usize].status.is_open()
+                        && np.step(i as usize, work.tree, work.world) == StepOutcome::Active
+                    {
+                        self.queue.push(i);
+                    }
+                }
+            }
+        }
+        np.compact_if_sparse();
+        super::round_robin(np, &mut self.queue, work, meter);
+    }
+
+    /// The first part of [`Self::run`]: place the rings and resolve the open pairs of the inner
+    /// [`WHOLE_RINGS`] whole, nearest the fixation first. None, and nothing done, if `columns`
+    /// does not describe `np`'s pairs; otherwise whether the budget is left (every foveal pair
+    /// settled). Also what a frame that orders its work does first (see `collider`): the
+    /// priced order alone leaves the foveal pairs likely to collide for last.
+    #[allow(clippy::too_many_arguments)]
+    pub fn fovea(
+        &mut self,
+        np: &mut NarrowPhase,
+        tree: &SphereTree,
+        world: &World,
+        columns: &Columns,
+        viewer: &Viewer,
+        fixation_px: [f64; 2],
+        uncertainty_deg: f64,
+        meter: &mut Meter<'_>,
+    ) -> Option<bool> {
         if !columns.covers(np.pairs.len()) {
-            return false;
+            return None;
         }
         let start = meter.now_ns();
         self.place(columns, viewer, fixation_px, uncertainty_deg);
         self.setup_ns = meter.now_ns().saturating_sub(start);
-        // The first round straight off the ranges: no queue of every pair is built.
-        self.queue.clear();
-        // The pairs of the rings about the fovea, whole and nearest the fixation first.
-        let pos = &work.world.position;
+        let pos = &world.position;
         self.near.clear();
         for ranges in &self.ranges[..WHOLE_RINGS] {
             for &[lo, hi] in ranges.as_slice() {
@@ -166,27 +226,11 @@ impl Rings {
         self.near.sort_unstable();
         for &(_, i) in &self.near {
             if meter.exhausted(np.tests) {
-                return true;
+                return Some(false);
             }
-            np.resolve_fully(i as usize, work.tree, work.world);
+            np.resolve_fully(i as usize, tree, world);
         }
-        for ranges in &self.ranges[WHOLE_RINGS..] {
-            for &[lo, hi] in ranges.as_slice() {
-                for i in lo..hi {
-                    if meter.exhausted(np.tests) {
-                        return true;
-                    }
-                    if np.pairs[i as usize].status.is_open()
-                        && np.step(i as usize, work.tree, work.world) == StepOutcome::Active
-                    {
-                        self.queue.push(i);
-                    }
-                }
-            }
-        }
-        np.compact_if_sparse();
-        super::round_robin(np, &mut self.queue, work, meter);
-        true
+        Some(true)
     }
 
     /// Fill the ranges of every ring and of the rest.
