@@ -262,9 +262,11 @@ pub struct SimConfig {
     /// that will likely collide for last (deeming a true collision costs no perceived error P),
     /// and a deemed pair's response comes from an interrupted traversal, not the exact contact.
     /// The price is P elsewhere: the foveal pairs' descents come out of the same budget
-    /// (docs/BENCHMARKS.md measures both). At large N the broad phase's regions already put the
-    /// foveal pairs first whatever this says; sphere-test budgets and exact frames never take
-    /// the pass.
+    /// (docs/BENCHMARKS.md measures both). Without it the priced scheduler already settles them
+    /// first where sweep and prune's columns let the gaze rings find them and the frame can pay
+    /// for placing the rings (`schedule::rings`); this pass needs neither, and runs before the
+    /// root pass. At large N the broad phase's regions already put the foveal pairs first
+    /// whatever this says; sphere-test budgets and exact frames never take the pass.
     pub fovea_first: bool,
 }
 
