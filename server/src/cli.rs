@@ -51,10 +51,11 @@ pub struct Cli {
     /// exact runs; under a sphere-test budget, a pair's cost last frame where it is remembered);
     /// on identical frames it reaches 0.81-1.00 of the reduction a clairvoyant schedule could
     /// make over round-robin under sphere-test budgets. A wall-clock frame settles the pairs
-    /// apart at the root in one pass first; one too short to pay for ordering the rest resolves
-    /// the pairs within 5 degrees of the fixation whole, nearest first, then runs round-robin:
-    /// at a tenth of the exact narrow phase this leaves 0.35-0.89x round-robin's perceived error
-    /// at N = 10,000, at a third (mostly ordered) 0.01-0.40x (docs/BENCHMARKS.md).
+    /// apart at the root in one pass first, then the pairs within 5 degrees of the fixation,
+    /// whole and nearest first (so what the viewer looks at is exact), then orders the rest, or
+    /// runs round-robin over it when the frame cannot pay for ordering: at a tenth of the exact
+    /// narrow phase this leaves 0.33-0.87x round-robin's perceived error at N = 10,000, at a
+    /// third 0.01-0.41x (docs/BENCHMARKS.md).
     #[arg(long, env = "FOVEAL_SCHEDULER", default_value = "priced", value_parser = parse_scheduler)]
     pub scheduler: SchedulerKind,
     /// Worker threads for the frame's phases (1..=64; default: the machine's cores, at most 64):
