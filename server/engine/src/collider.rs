@@ -100,7 +100,9 @@ fn ordering_share(kind: crate::config::SchedulerKind) -> f64 {
 /// frame on it pays, because the few tests left go to the pairs a viewer sees (at a tenth of
 /// the exact narrow phase, N = 500, 12 us: priced's true P 0.69x (C = 5) and 0.48x (C = 1)
 /// round-robin's), but at a thirtieth (4 us) no test would be left: placing anyway left
-/// 1.02-1.03x round-robin's P. At a half, the tenth's frames placed in only 58% of frames.
+/// 1.02-1.03x round-robin's P. At a half, the tenth's frames placed in only 58% of frames. (These
+/// figures predate the root pass and the fovea resolved whole; the gate was kept through both,
+/// and docs/BENCHMARKS.md has the current ones.)
 const RINGS_SHARE: f64 = 0.75;
 
 /// The first wall-clock frames order whatever the estimate says, so that the cost is learnt from
