@@ -159,6 +159,14 @@ impl CostGate {
     }
 }
 
+/// Settle every root-separated pair of the frame in one pass, as far as `meter` allows (see
+/// `NarrowPhase::settle_separate_roots`).
+fn settle_roots(narrow: &mut NarrowPhase, input: &FrameInput<'_>, meter: &mut Meter<'_>) {
+    narrow.settle_separate_roots(input.tree, input.world, &mut |tests| {
+        !meter.exhausted(tests)
+    });
+}
+
 impl Collider {
     /// A collider for `config` (its scheduler, models, threshold and audit switch; the budget is
     /// handed to each call) over `tree` and `viewer`.
@@ -206,7 +214,15 @@ impl Collider {
         self.config.fovea_first
             && matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_))
             && self.config.scheduler == crate::config::SchedulerKind::Priced
-            && self.config.priced.gaze
+            && self.uses_gaze()
+    }
+
+    /// Whether the scheduler orders by gaze: the paper's priority schedulers and the priced
+    /// scheduler, except its gaze-blind ablation ([`crate::schedule::PricedOptions::gaze`]).
+    fn uses_gaze(&self) -> bool {
+        self.config.scheduler.needs_priority()
+            && (self.config.scheduler != crate::config::SchedulerKind::Priced
+                || self.config.priced.gaze)
     }
 
     /// Pair states of the last frame.
@@ -447,10 +463,7 @@ impl Collider {
             );
         if roots_first {
             let roots_start = clock.now_ns();
-            self.narrow
-                .settle_separate_roots(input.tree, input.world, &mut |tests| {
-                    !meter.exhausted(tests)
-                });
+            settle_roots(&mut self.narrow, input, &mut meter);
             pass_ns += clock.now_ns().saturating_sub(roots_start);
         }
         let uncertainty_deg = fixation.map_or(0.0, |f| f.clamped().uncertainty_deg);
@@ -458,11 +471,10 @@ impl Collider {
         // scheduler's gaze-blind ablation), where the broad phase has columns to find the pairs
         // by and the frame's time can pay for placing them (learnt like the ordering's cost,
         // see `CostGate`).
-        let uses_gaze = self.config.scheduler.needs_priority()
-            && (self.config.scheduler != crate::config::SchedulerKind::Priced
-                || self.config.priced.gaze);
         let rings_at = match (input.columns, fixation_px) {
-            (Some(c), Some(px)) if uses_gaze && meter.counts_time() && c.covers(n) => Some((c, px)),
+            (Some(c), Some(px)) if self.uses_gaze() && meter.counts_time() && c.covers(n) => {
+                Some((c, px))
+            }
             _ => None,
         };
         let rings_affordable = |meter: &Meter<'_>, gate: &mut CostGate| {
@@ -572,10 +584,7 @@ impl Collider {
             // the bodies of the columns near the fixation; a frame too short to pay for it
             // (learnt like the ordering's cost, see `CostGate`) runs plain round-robin.
             if !roots_first && meter.counts_time() {
-                self.narrow
-                    .settle_separate_roots(input.tree, input.world, &mut |tests| {
-                        !meter.exhausted(tests)
-                    });
+                settle_roots(&mut self.narrow, input, &mut meter);
             }
             if fovea_done {
                 // The rings are placed and the fovea settled: round-robin over the rest.
