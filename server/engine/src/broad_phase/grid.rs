@@ -15,14 +15,16 @@
 //!   follow), then each bucket, a few megabytes at most, is counting-sorted by cell;
 //! - cells are numbered x fastest, so the x-cells `ix - 2 ..= ix + 2` of any row are one contiguous
 //!   slice: a body's candidates are five slices (its own row from the next body on, and the four
-//!   forward rows), each scanned without a branch on the (unpredictable) overlap outcome, and the
-//!   first three slots of each without a loop;
+//!   forward rows), each scanned four slots at a time in vector registers (the sorted bodies are
+//!   kept one array a coordinate for this) and without a branch on the (unpredictable) overlap
+//!   outcome; a slice holds 2.3 bodies on average at the paper's density, so most take one round;
 //! - half-width x cells cut the candidates a body is tested against by about a sixth, compared with
 //!   cubic cells, for one more entry per cell in the cell index.
 //!
-//! Memory is fixed by N: 68 bytes per body (its cell, and the body in two 32-byte layouts), 4 bytes
-//! per cell (about 2.2 cells per body at the paper's density, at most 4 plus a constant), and the pair
-//! buffer, which shrinks after a pathological frame (see [`super::SHRINK_AFTER_FRAMES`]).
+//! Memory is fixed by N: 72 bytes per body (its cell, the body dealt into its bucket in 32 bytes,
+//! and sorted in 36), 4 bytes per cell (about 2.2 cells per body at the paper's density, at most 4
+//! plus a constant), and the pair buffer, which shrinks after a pathological frame (see
+//! [`super::SHRINK_AFTER_FRAMES`]).
 //!
 //! The output depends only on this frame's positions: bodies are ordered by cell, then by id, and
 //! pairs are listed body by body in that order. It does not depend on how many threads produce it:
@@ -38,20 +40,18 @@ use std::fmt;
 
 use super::{PairBuffer, Region, RegionPass};
 use crate::math::Vec3;
+use wide::{CmpLe, f64x4};
 
 /// Cells are made wider than their minimum by this factor, so that the rounding of the cell
 /// arithmetic (relative error ~1e-13 at any grid size allowed here, also far from the origin) can
 /// never put two centres `reach` apart further apart in cells than the neighbourhood searched.
 const CELL_MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
 
-/// Candidate slots of a window tested without a loop (see `Rows::span`). A window holds 2.3
-/// bodies on average at the paper's density: with 2, the loop over the rest ran (and its exit was
-/// mispredicted) in about 40% of windows; with 3 the span is 3-5% faster on one thread at 10,000
-/// to 1,000,000 bodies, with 4 slower again (more masked tests than mispredictions saved).
-const ALWAYS: usize = 3;
-
 /// x cells per y-z cell width: candidates come from x-cells `ix - X_SPLIT ..= ix + X_SPLIT`.
 const X_SPLIT: usize = 2;
+
+/// Candidate slots tested at once: four f64 lanes (two SSE2 registers, one AVX register).
+const LANES: usize = 4;
 
 /// At most this many cells per body (plus a constant): bounds memory for sparse scenes; cells only
 /// ever get wider, which is always correct.
@@ -78,7 +78,7 @@ const REGION_SLABS: usize = 4;
 /// microseconds, about the grid's time for this many bodies.
 const MIN_BODIES_PER_THREAD: usize = 20_000;
 
-/// One body in cell order: its centre, id and cell (32 bytes, two to a cache line).
+/// One body dealt into its bucket: its centre, id and cell (32 bytes, two to a cache line).
 #[derive(Debug, Clone, Copy, Default)]
 struct Slot {
     x: f64,
@@ -86,6 +86,99 @@ struct Slot {
     z: f64,
     id: u32,
     cell: u32,
+}
+
+/// The bodies in cell order, one array a field, so that the pair search loads a window's
+/// candidates [`LANES`] at a time into vector registers; each array has `LANES` slots of padding
+/// past the last body, so a window's last load never runs off the end.
+#[derive(Debug, Clone)]
+struct Sorted {
+    x: Vec<f64>,
+    y: Vec<f64>,
+    z: Vec<f64>,
+    id: Vec<u32>,
+    cell: Vec<u32>,
+}
+
+impl Sorted {
+    fn new(bodies: usize) -> Self {
+        let n = bodies + LANES;
+        Self {
+            x: vec![0.0; n],
+            y: vec![0.0; n],
+            z: vec![0.0; n],
+            id: vec![0; n],
+            cell: vec![0; n],
+        }
+    }
+
+    fn view(&self) -> SortedRef<'_> {
+        SortedRef {
+            x: &self.x,
+            y: &self.y,
+            z: &self.z,
+            id: &self.id,
+            cell: &self.cell,
+        }
+    }
+
+    fn view_mut(&mut self) -> SortedMut<'_> {
+        SortedMut {
+            x: &mut self.x,
+            y: &mut self.y,
+            z: &mut self.z,
+            id: &mut self.id,
+            cell: &mut self.cell,
+        }
+    }
+}
+
+/// Read-only [`Sorted`], shared by the partitions of the pair search.
+#[derive(Clone, Copy)]
+struct SortedRef<'a> {
+    x: &'a [f64],
+    y: &'a [f64],
+    z: &'a [f64],
+    id: &'a [u32],
+    cell: &'a [u32],
+}
+
+/// A run of [`Sorted`]'s slots, written by one part of the sort.
+struct SortedMut<'a> {
+    x: &'a mut [f64],
+    y: &'a mut [f64],
+    z: &'a mut [f64],
+    id: &'a mut [u32],
+    cell: &'a mut [u32],
+}
+
+impl<'a> SortedMut<'a> {
+    /// The first `k` slots, and the rest.
+    fn split_at(self, k: usize) -> (Self, Self) {
+        let (x, x1) = self.x.split_at_mut(k);
+        let (y, y1) = self.y.split_at_mut(k);
+        let (z, z1) = self.z.split_at_mut(k);
+        let (id, id1) = self.id.split_at_mut(k);
+        let (cell, cell1) = self.cell.split_at_mut(k);
+        (
+            Self { x, y, z, id, cell },
+            Self {
+                x: x1,
+                y: y1,
+                z: z1,
+                id: id1,
+                cell: cell1,
+            },
+        )
+    }
+
+    fn put(&mut self, k: usize, s: &Slot) {
+        self.x[k] = s.x;
+        self.y[k] = s.y;
+        self.z[k] = s.z;
+        self.id[k] = s.id;
+        self.cell[k] = s.cell;
+    }
 }
 
 /// Cell arithmetic, copied out of the grid so that it can be used while the buffers are borrowed.
@@ -133,7 +226,7 @@ pub(super) struct Grid {
     /// Bodies dealt into buckets, in id order within a bucket.
     staged: Vec<Slot>,
     /// Bodies sorted by cell, then id.
-    sorted: Vec<Slot>,
+    sorted: Sorted,
     /// `start[c]..start[c + 1]` are cell c's slots; past the last cell, one row of empty cells
     /// stands in for the rows beyond the volume's faces.
     start: Vec<u32>,
@@ -230,7 +323,7 @@ impl Grid {
             bucket_start: vec![0; buckets + 1],
             cell_of_id: vec![0; bodies],
             staged: vec![Slot::default(); bodies],
-            sorted: vec![Slot::default(); bodies + ALWAYS],
+            sorted: Sorted::new(bodies),
             start: vec![0; cells + nx + 1],
             part_counts: Vec::new(),
             cursors: vec![vec![0; (1usize << bucket_shift).min(cells)]],
@@ -274,7 +367,7 @@ impl Grid {
     /// body's candidates lie in a few forward streams (its row, the next row and three rows of the
     /// next z-plane), which is why the simulation renumbers its bodies in it.
     pub(super) fn cell_order(&self) -> Vec<u32> {
-        self.sorted[..self.bodies].iter().map(|s| s.id).collect()
+        self.sorted.id[..self.bodies].to_vec()
     }
 
     /// Renumber the bodies: old id `i` becomes `new_of_old[i]`. What persists between updates and
@@ -292,8 +385,8 @@ impl Grid {
             .as_mut_slice()
             .iter_mut()
             .for_each(|p| *p = map(*p));
-        for s in &mut self.sorted[..self.bodies] {
-            s.id = new_of_old[s.id as usize];
+        for id in &mut self.sorted.id[..self.bodies] {
+            *id = new_of_old[*id as usize];
         }
     }
 
@@ -353,7 +446,7 @@ impl Grid {
         let rows = Rows {
             reach: self.reach,
             dims: self.dims,
-            sorted: &self.sorted,
+            sorted: self.sorted.view(),
             start: &self.start,
         };
         let (n, nx) = (self.dims.n, self.dims.nx);
@@ -402,7 +495,7 @@ impl Grid {
         let rows = Rows {
             reach: self.reach,
             dims: self.dims,
-            sorted: &self.sorted,
+            sorted: self.sorted.view(),
             start: &self.start,
         };
         let mut out = PairBuffer::default();
@@ -477,21 +570,21 @@ impl Grid {
         // Level 2: counting sort of each bucket by cell, parts taking consecutive buckets.
         let cells = dims.cells();
         let cuts = cut(&self.bucket_start, parts);
-        let mut sorted: &mut [Slot] = &mut self.sorted;
+        let mut sorted = self.sorted.view_mut();
         let mut start: &mut [u32] = &mut self.start[..cells];
         let mut items = Vec::with_capacity(parts);
         for (w, cursor) in cuts.windows(2).zip(&mut self.cursors) {
             let (b0, b1) = (w[0], w[1]);
             let bodies = (self.bucket_start[b1] - self.bucket_start[b0]) as usize;
             let span = (b1 << shift).min(cells) - (b0 << shift).min(cells);
-            let (dest, more) = std::mem::take(&mut sorted).split_at_mut(bodies);
+            let (dest, more) = sorted.split_at(bodies);
             sorted = more;
             let (index, more) = std::mem::take(&mut start).split_at_mut(span);
             start = more;
             items.push((b0..b1, dest, index, cursor));
         }
         let (staged, bucket_start) = (&self.staged[..], &self.bucket_start[..]);
-        in_parallel(items, |(range, dest, index, cursor)| {
+        in_parallel(items, |(range, mut dest, index, cursor)| {
             let (s_base, c_base) = (bucket_start[range.start] as usize, range.start << shift);
             for b in range {
                 let (s0, s1) = (bucket_start[b] as usize, bucket_start[b + 1] as usize);
@@ -507,13 +600,11 @@ impl Grid {
                     index[c0 - c_base + k] = at;
                     (at, *c) = (at + *c, at);
                 }
-                // The bucket's destination is touched in order first, so that the scatter below
-                // hits cache instead of fetching a line for every write.
-                let dest = &mut dest[s0 - s_base..s1 - s_base];
-                dest.fill(Slot::default());
+                // Five destination arrays: touching them in order first, as paid for a single
+                // array of slots, no longer measured faster than the scatter alone.
                 for s in &staged[s0..s1] {
                     let k = s.cell as usize - c0;
-                    dest[count[k] as usize - s0] = *s;
+                    dest.put(count[k] as usize - s_base, s);
                     count[k] += 1;
                 }
             }
@@ -526,7 +617,7 @@ impl Grid {
         let rows = Rows {
             reach: self.reach,
             dims: self.dims,
-            sorted: &self.sorted,
+            sorted: self.sorted.view(),
             start: &self.start,
         };
         let parts = self.parts();
@@ -569,17 +660,21 @@ impl Grid {
         for c in 0..cells {
             let (a, b) = (self.start[c] as usize, self.start[c + 1] as usize);
             assert!(a <= b, "cell {c} ends before it starts");
-            for s in &self.sorted[a..b] {
-                let id = s.id as usize;
+            let s = &self.sorted;
+            for k in a..b {
+                let id = s.id[k] as usize;
                 assert!(!seen[id], "body {id} twice");
                 seen[id] = true;
                 let p = positions[id];
                 assert_eq!(self.dims.cell_of(p) as usize, c, "body {id} in wrong cell");
-                assert_eq!(s.cell as usize, c, "body {id} labelled with a wrong cell");
-                assert_eq!((s.x, s.y, s.z), (p.x, p.y, p.z), "body {id} stale");
+                assert_eq!(
+                    s.cell[k] as usize, c,
+                    "body {id} labelled with a wrong cell"
+                );
+                assert_eq!((s.x[k], s.y[k], s.z[k]), (p.x, p.y, p.z), "body {id} stale");
             }
-            for w in self.sorted[a..b].windows(2) {
-                assert!(w[0].id < w[1].id, "cell {c} not in id order");
+            for w in s.id[a..b].windows(2) {
+                assert!(w[0] < w[1], "cell {c} not in id order");
             }
         }
         assert!(seen.iter().all(|&s| s), "a body is missing from the cells");
@@ -591,7 +686,7 @@ impl Grid {
 struct Rows<'a> {
     reach: f64,
     dims: Dims,
-    sorted: &'a [Slot],
+    sorted: SortedRef<'a>,
     start: &'a [u32],
 }
 
@@ -639,31 +734,44 @@ impl Rows<'_> {
                 cells
             },
         ];
+        let SortedRef { x, y, z, id, cell } = sorted;
+        // One length for all five arrays, so that one bounds check covers a round's loads.
+        let slots = x.len();
+        let (y, z, id, cell) = (&y[..slots], &z[..slots], &id[..slots], &cell[..slots]);
         for i in start[row + x0] as usize..start[row + x1] as usize {
-            let p = sorted[i];
-            let ix = p.cell as usize - row;
+            let ix = cell[i] as usize - row;
+            let (p, pid) = ([x[i], y[i], z[i]], id[i]);
             let (lo, hi) = (ix.saturating_sub(X_SPLIT), (ix + X_SPLIT + 1).min(nx));
             let mut windows = [(i + 1, start[row + hi] as usize); 5];
             for (w, &b) in windows[1..].iter_mut().zip(&next) {
                 *w = (start[b + lo] as usize, start[b + hi] as usize);
             }
-            let most: usize = windows.iter().map(|w| w.1 - w.0 + ALWAYS).sum();
+            let most: usize = windows.iter().map(|w| w.1 - w.0 + LANES).sum();
             if buf.len() < len + most {
                 buf.resize((2 * buf.len()).max(len + most) + 64, (0, 0));
             }
             for (b0, b1) in windows {
-                // The first ALWAYS slots are tested whatever the window's length and the
-                // tests past its end masked: a loop with an unpredictable trip count costs
-                // a mispredicted exit, about as much as a few tests, and most windows are
-                // this short (the slots exist: `sorted` is padded).
-                for (k, q) in sorted[b0..b0 + ALWAYS].iter().enumerate() {
-                    let hit = overlap(&p, q, r) & (b0 + k < b1);
-                    buf[len] = (p.id.min(q.id), p.id.max(q.id));
-                    len += usize::from(hit);
-                }
-                for q in sorted.get(b0 + ALWAYS..b1).unwrap_or_default() {
-                    buf[len] = (p.id.min(q.id), p.id.max(q.id));
-                    len += usize::from(overlap(&p, q, r));
+                // A window's slots are tested LANES at a time, the tests past its end masked;
+                // most windows hold fewer than LANES bodies, so most take one round and the
+                // loop's exit is rarely mispredicted.
+                let mut k = b0;
+                loop {
+                    let hits = near(x, y, z, k, p, r) & ((1 << (b1 - k).min(LANES)) - 1);
+                    // Every slot's pair is written and the cursor advanced by its test, so the
+                    // unpredictable outcome costs no branch (the slots exist: padding).
+                    let q: [u32; LANES] = id[k..k + LANES].try_into().unwrap_or([0; LANES]);
+                    let out = &mut buf[len..len + LANES];
+                    let mut found = 0;
+                    for (j, q) in q.into_iter().enumerate() {
+                        // `found <= j < LANES`: the mask only spares the bounds check.
+                        out[found & (LANES - 1)] = (pid.min(q), pid.max(q));
+                        found += (hits >> j) & 1;
+                    }
+                    len += found;
+                    k += LANES;
+                    if k >= b1 {
+                        break;
+                    }
                 }
             }
         }
@@ -687,12 +795,19 @@ fn region_cells(
     std::array::from_fn(|a| [t[a] * tile[a], ((t[a] + 1) * tile[a]).min(cells[a])])
 }
 
-/// Whether the boxes of two slots overlap (touching counts), as [`super::brute_force_pairs`] has
-/// it. Every candidate's pair is written to the output and the cursor advanced by this, so the
-/// unpredictable outcome costs no branch.
+/// Which of the [`LANES`] slots from `k` on hold a box overlapping the box at `p` (touching
+/// counts), as [`super::brute_force_pairs`] has it (|q - p| <= reach on every axis, in f64): bit
+/// j for slot `k + j`. Each axis is one vector subtraction, absolute value and comparison.
 #[inline(always)]
-fn overlap(p: &Slot, q: &Slot, reach: f64) -> bool {
-    ((q.x - p.x).abs() <= reach) & ((q.y - p.y).abs() <= reach) & ((q.z - p.z).abs() <= reach)
+fn near(x: &[f64], y: &[f64], z: &[f64], k: usize, p: [f64; 3], reach: f64) -> usize {
+    let lanes =
+        |v: &[f64]| f64x4::from(<[f64; LANES]>::try_from(&v[k..k + LANES]).unwrap_or([0.0; LANES]));
+    let axis = |v: &[f64], c: f64| {
+        (lanes(v) - f64x4::splat(c))
+            .abs()
+            .cmp_le(f64x4::splat(reach))
+    };
+    (axis(x, p[0]) & axis(y, p[1]) & axis(z, p[2])).move_mask() as usize
 }
 
 /// Run `f` on every item: the first on the calling thread, the others as jobs of the thread pool
