@@ -22,6 +22,7 @@
 
 use super::{Columns, PairBuffer, RUNS};
 use crate::math::Vec3;
+use wide::{CmpGt, CmpLe, CmpLt, f64x4};
 
 /// Most columns per grid axis: bounds memory for absurdly sparse configs (cells only ever get wider,
 /// which is always correct).
@@ -455,18 +456,88 @@ impl PairSink<'_> {
         self.buf[self.len] = (p.id.min(q.id), p.id.max(q.id));
         self.len += usize::from(hit);
     }
+
+    /// The pairs of `p` with `q[j]` for every bit j of `hits`, in lane order.
+    #[inline]
+    fn offer_lanes(&mut self, p: &Entry, q: &[Entry], hits: u32) {
+        if self.len + LANES > self.buf.len() {
+            self.buf.resize(self.len * 2 + 64, (0, 0));
+        }
+        let out = &mut self.buf[self.len..self.len + LANES];
+        let mut found = 0;
+        for (j, q) in q.iter().take(LANES).enumerate() {
+            // `found <= j < LANES`: the mask only spares the bounds check.
+            out[found & (LANES - 1)] = (p.id.min(q.id), p.id.max(q.id));
+            found += (hits >> j) as usize & 1;
+        }
+        self.len += found;
+    }
+}
+
+/// Candidates of one body tested at once: four f64 lanes (two SSE2 registers).
+const LANES: usize = 4;
+
+/// The candidates `b[k..]` of `p`, in order, up to the first whose x is more than `reach` past
+/// `p`'s: the scalar loop `for q in &b[k..] { if q.x - p.x > reach { break } offer }`, run
+/// [`LANES`] candidates a round. Within a round no branch depends on a candidate: the lanes
+/// before the first one past `reach` are offered, masked, and the round ends the run iff some
+/// lane was past `reach`; most runs hold fewer than four candidates, so the one branch a run
+/// costs (its end) is what the scalar loop paid per candidate. The arithmetic is the scalar
+/// loop's, lane by lane, so the pairs and their order are the same.
+#[inline]
+fn sweep_run(p: &Entry, b: &[Entry], mut k: usize, reach: f64, out: &mut PairSink<'_>) {
+    let (px, r) = (f64x4::splat(p.x), f64x4::splat(reach));
+    let (py, pz) = (f64x4::splat(p.y), f64x4::splat(p.z));
+    while let Some(q) = b.get(k..k + LANES) {
+        let lane = |f: fn(&Entry) -> f64| f64x4::from([f(&q[0]), f(&q[1]), f(&q[2]), f(&q[3])]);
+        let past = (lane(|e| e.x) - px).cmp_gt(r).move_mask() as u32;
+        let near = ((lane(|e| e.y) - py).abs().cmp_le(r) & (lane(|e| e.z) - pz).abs().cmp_le(r))
+            .move_mask() as u32;
+        // Lanes before the first one past `reach` (all four when none is).
+        let stop = (past | 1 << LANES).trailing_zeros();
+        out.offer_lanes(p, q, near & ((1 << stop) - 1));
+        if stop < LANES as u32 {
+            return;
+        }
+        k += LANES;
+    }
+    for q in &b[k.min(b.len())..] {
+        if q.x - p.x > reach {
+            break;
+        }
+        out.offer(p, q, reach);
+    }
+}
+
+/// The first index from `k` on whose x is not below `limit` (or `b.len()`): the scalar loop
+/// `while k < b.len() && b[k].x < limit { k += 1 }`, [`LANES`] entries a round. The entries
+/// below `limit` are a prefix of the round's lanes (the column is sorted on x; counted as the
+/// lanes before the first that is not, as the scalar loop stops), so a round costs no branch per
+/// entry, and most bodies' starts move by fewer than four.
+#[inline]
+fn skip_below(b: &[Entry], mut k: usize, limit: f64) -> usize {
+    let limit4 = f64x4::splat(limit);
+    while let Some(q) = b.get(k..k + LANES) {
+        let below = f64x4::from([q[0].x, q[1].x, q[2].x, q[3].x])
+            .cmp_lt(limit4)
+            .move_mask() as u32;
+        let stop = (!below).trailing_zeros().min(LANES as u32);
+        k += stop as usize;
+        if stop < LANES as u32 {
+            return k;
+        }
+    }
+    while k < b.len() && b[k].x < limit {
+        k += 1;
+    }
+    k
 }
 
 /// `offsets[k]`: where body `k`'s pairs start in `out` (the last entry: the run's end).
 fn sweep_self(a: &[Entry], reach: f64, out: &mut PairSink<'_>, offsets: &mut [u32]) {
     for (i, p) in a.iter().enumerate() {
         offsets[i] = out.len as u32;
-        for q in &a[i + 1..] {
-            if q.x - p.x > reach {
-                break;
-            }
-            out.offer(p, q, reach);
-        }
+        sweep_run(p, a, i + 1, reach, out);
     }
     offsets[a.len()] = out.len as u32;
 }
@@ -476,15 +547,8 @@ fn sweep_pair(a: &[Entry], b: &[Entry], reach: f64, out: &mut PairSink<'_>, offs
     let mut start = 0;
     for (k, p) in a.iter().enumerate() {
         offsets[k] = out.len as u32;
-        while start < b.len() && b[start].x < p.x - reach {
-            start += 1;
-        }
-        for q in &b[start..] {
-            if q.x - p.x > reach {
-                break;
-            }
-            out.offer(p, q, reach);
-        }
+        start = skip_below(b, start, p.x - reach);
+        sweep_run(p, b, start, reach, out);
     }
     offsets[a.len()] = out.len as u32;
 }
