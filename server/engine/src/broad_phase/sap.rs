@@ -14,7 +14,7 @@
 //!
 //! The order of the pairs this produces is part of the engine's determinism contract at the paper's
 //! N (the schedulers see it), so this file's arithmetic and iteration order are pinned by a test.
-//! On several threads the sweep (most of the time: about 0.9 of 1.0 ms at N = 10,000) is split
+//! On several threads the sweep (most of the update's time at N = 10,000) is split
 //! into consecutive ranges of z-rows whose outputs are concatenated in order, so the pairs, their
 //! order and the index are the same for any thread count; the key refresh and the insertion sorts
 //! are split the same way, and only the few bodies that change column are moved on the calling
