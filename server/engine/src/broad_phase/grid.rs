@@ -21,8 +21,8 @@
 //! - half-width x cells cut the candidates a body is tested against by about a sixth, compared with
 //!   cubic cells, for one more entry per cell in the cell index.
 //!
-//! Memory is fixed by N: 72 bytes per body (its cell, the body dealt into its bucket in 32 bytes,
-//! and sorted in 36), 4 bytes per cell (about 2.2 cells per body at the paper's density, at most 4
+//! Memory is fixed by N: 68 bytes per body (its cell, and the body in 32 bytes twice: dealt into
+//! its bucket, and sorted, one array a field), 4 bytes per cell (about 2.2 cells per body at the paper's density, at most 4
 //! plus a constant), and the pair buffer, which shrinks after a pathological frame (see
 //! [`super::SHRINK_AFTER_FRAMES`]).
 //!
