@@ -22,9 +22,9 @@
 //!   cubic cells, for one more entry per cell in the cell index.
 //!
 //! Memory is fixed by N: 68 bytes per body (its cell, and the body in 32 bytes twice: dealt into
-//! its bucket, and sorted, one array a field), 4 bytes per cell (about 2.2 cells per body at the paper's density, at most 4
-//! plus a constant), and the pair buffer, which shrinks after a pathological frame (see
-//! [`super::SHRINK_AFTER_FRAMES`]).
+//! its bucket, and sorted, one array a field), 4 bytes per cell (about 2.2 cells per body at the
+//! paper's density, at most 4 plus a constant), and the pair buffer, which shrinks after a
+//! pathological frame (see [`super::SHRINK_AFTER_FRAMES`]).
 //!
 //! The output depends only on this frame's positions: bodies are ordered by cell, then by id, and
 //! pairs are listed body by body in that order. It does not depend on how many threads produce it:
