@@ -38,7 +38,7 @@
 
 use std::fmt;
 
-use super::{PairBuffer, Region, RegionPass};
+use super::{LANES, PairBuffer, Region, RegionPass, put_lanes};
 use crate::math::Vec3;
 use wide::{CmpLe, f64x4};
 
@@ -49,9 +49,6 @@ const CELL_MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
 
 /// x cells per y-z cell width: candidates come from x-cells `ix - X_SPLIT ..= ix + X_SPLIT`.
 const X_SPLIT: usize = 2;
-
-/// Candidate slots tested at once: four f64 lanes (two SSE2 registers, one AVX register).
-const LANES: usize = 4;
 
 /// At most this many cells per body (plus a constant): bounds memory for sparse scenes; cells only
 /// ever get wider, which is always correct.
@@ -762,14 +759,7 @@ impl Rows<'_> {
                     // Every slot's pair is written and the cursor advanced by its test, so the
                     // unpredictable outcome costs no branch (the slots exist: padding).
                     let q: [u32; LANES] = id[k..k + LANES].try_into().unwrap_or([0; LANES]);
-                    let out = &mut buf[len..len + LANES];
-                    let mut found = 0;
-                    for (j, q) in q.into_iter().enumerate() {
-                        // `found <= j < LANES`: the mask only spares the bounds check.
-                        out[found & (LANES - 1)] = (pid.min(q), pid.max(q));
-                        found += (hits >> j) & 1;
-                    }
-                    len += found;
+                    len += put_lanes(&mut buf[len..len + LANES], pid, q, hits);
                     k += LANES;
                     if k >= b1 {
                         break;

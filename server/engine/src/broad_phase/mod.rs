@@ -47,6 +47,26 @@ pub const SHRINK_AFTER_FRAMES: u32 = 120;
 /// Pairs of headroom the shrink rule always allows, so small scenes never reallocate.
 pub const PAIR_SLACK: usize = 1024;
 
+/// Candidates of one body tested at once by both broad phases: four f64 lanes (two SSE2
+/// registers, one AVX register).
+const LANES: usize = 4;
+
+/// Write body `p`'s pair with each of the [`LANES`] candidates `q` to `out`, kept (the cursor
+/// advanced past it) for each bit j of `hits`, in lane order; returns how many were kept. Every
+/// slot is written and the count advanced by its bit, so the (unpredictable) overlap outcome costs
+/// no branch. `out` is the [`LANES`] slots from the cursor on.
+#[inline(always)]
+fn put_lanes(out: &mut [(u32, u32)], p: u32, q: [u32; LANES], hits: usize) -> usize {
+    let out = &mut out[..LANES];
+    let mut found = 0;
+    for (j, q) in q.into_iter().enumerate() {
+        // `found <= j < LANES`: the mask only spares the bounds check.
+        out[found & (LANES - 1)] = (p.min(q), p.max(q));
+        found += (hits >> j) & 1;
+    }
+    found
+}
+
 /// A block of the grid's cells (a column over a slab of the volume's depth): the unit of
 /// broad-phase work a whole-frame budget sheds (see [`BroadPhase::update_in_order`]). Bodies whose cell is in the
 /// region search it; the pairs they find may reach into a neighbouring region.

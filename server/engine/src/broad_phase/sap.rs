@@ -20,7 +20,7 @@
 //! are split the same way, and only the few bodies that change column are moved on the calling
 //! thread.
 
-use super::{Columns, PairBuffer, RUNS};
+use super::{Columns, LANES, PairBuffer, RUNS, put_lanes};
 use crate::math::Vec3;
 use wide::{CmpGt, CmpLe, CmpLt, f64x4};
 
@@ -463,19 +463,11 @@ impl PairSink<'_> {
         if self.len + LANES > self.buf.len() {
             self.buf.resize(self.len * 2 + 64, (0, 0));
         }
+        let ids = [q[0].id, q[1].id, q[2].id, q[3].id];
         let out = &mut self.buf[self.len..self.len + LANES];
-        let mut found = 0;
-        for (j, q) in q.iter().take(LANES).enumerate() {
-            // `found <= j < LANES`: the mask only spares the bounds check.
-            out[found & (LANES - 1)] = (p.id.min(q.id), p.id.max(q.id));
-            found += (hits >> j) as usize & 1;
-        }
-        self.len += found;
+        self.len += put_lanes(out, p.id, ids, hits as usize);
     }
 }
-
-/// Candidates of one body tested at once: four f64 lanes (two SSE2 registers).
-const LANES: usize = 4;
 
 /// The candidates `b[k..]` of `p`, in order, up to the first whose x is more than `reach` past
 /// `p`'s: the scalar loop `for q in &b[k..] { if q.x - p.x > reach { break } offer }`, run
