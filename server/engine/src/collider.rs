@@ -490,7 +490,7 @@ impl Collider {
         // removes no false-positive error), and what the viewer looks at is then not exact.
         // At 10,000 bodies and a 4 ms frame budget this took the frames with every foveal pair
         // settled from 1-2% to 100% (docs/BENCHMARKS.md). `fovea_first` has settled them already.
-        let (mut rings_asked, mut fovea_done) = (false, false);
+        let (mut rings_asked, mut rings_placed) = (false, false);
         if let Some((columns, px)) = rings_at.filter(|_| {
             roots_first
                 && !whole_fovea
@@ -499,7 +499,7 @@ impl Collider {
             rings_asked = true;
             if rings_affordable(&meter, &mut self.rings_cost) {
                 let fovea_start = clock.now_ns();
-                fovea_done = self
+                rings_placed = self
                     .rings
                     .fovea(
                         &mut self.narrow,
@@ -512,10 +512,10 @@ impl Collider {
                         &mut meter,
                     )
                     .is_some();
-                if fovea_done {
+                if rings_placed {
                     self.rings_cost.learn(self.rings.setup_ns() as f64);
                 }
-                r.gaze_rings = fovea_done;
+                r.gaze_rings = rings_placed;
                 pass_ns += clock.now_ns().saturating_sub(fovea_start);
             }
         }
@@ -586,8 +586,9 @@ impl Collider {
             if !roots_first && meter.counts_time() {
                 settle_roots(&mut self.narrow, input, &mut meter);
             }
-            if fovea_done {
-                // The rings are placed and the fovea settled: round-robin over the rest.
+            if rings_placed {
+                // The rings are placed and the fovea done (settled, or the budget spent on it):
+                // round-robin over the rest.
                 self.rings.rest(&mut self.narrow, &work, &mut meter);
             } else {
                 match rings_at {
