@@ -324,6 +324,14 @@ impl BroadPhase {
         }
     }
 
+    /// The grid's pair search in the baseline's rounds only, as on a processor without AVX-512.
+    #[cfg(test)]
+    fn baseline_rounds(&mut self) {
+        if let Inner::Grid(g) = &mut self.inner {
+            g.baseline_rounds();
+        }
+    }
+
     #[cfg(test)]
     fn pair_storage(&self) -> usize {
         match &self.inner {
@@ -520,12 +528,16 @@ mod tests {
         v
     }
 
-    /// Every concrete configuration: sweep and prune and the grid on 1 thread, and each on 2 and
-    /// 3 threads with its partitions forced even at tiny N.
+    /// Every concrete configuration: sweep and prune and the grid on 1 thread, the grid in the
+    /// baseline's rounds (where the processor has AVX-512, the others take those), and each on
+    /// 2 and 3 threads with its partitions forced even at tiny N.
     fn every_configuration(half: f64, lo: Vec3, side: f64, n: usize) -> Vec<BroadPhase> {
+        let mut baseline = BroadPhase::with_kind(BroadPhaseKind::Grid, half, lo, side, n);
+        baseline.baseline_rounds();
         let mut out = vec![
             BroadPhase::with_kind(BroadPhaseKind::SweepAndPrune, half, lo, side, n),
             BroadPhase::with_kind(BroadPhaseKind::Grid, half, lo, side, n),
+            baseline,
         ];
         for kind in [BroadPhaseKind::SweepAndPrune, BroadPhaseKind::Grid] {
             for threads in [2, 3] {
@@ -742,7 +754,7 @@ mod tests {
     }
 
     /// At a scale where the grid really runs on two threads: the same pairs as sweep and prune,
-    /// and the same order on 1 and 2 threads, over frames of motion.
+    /// and the same order on 1 and 2 threads and in the baseline's rounds, over frames of motion.
     #[test]
     fn grid_matches_sweep_and_prune_at_scale_on_one_and_two_threads() {
         let n = 50_000;
@@ -753,10 +765,13 @@ mod tests {
         let mut one = BroadPhase::with_kind(BroadPhaseKind::Grid, half, Vec3::ZERO, side, n);
         let mut two = one.clone();
         two.set_threads(2);
+        let mut baseline = one.clone();
+        baseline.baseline_rounds();
         for pos in scripted_frames(n, side, 8.0, 3) {
             let expected = sorted(sap.update(&pos).to_vec());
             let got = one.update(&pos).to_vec();
             assert_eq!(two.update(&pos), &got[..]);
+            assert_eq!(baseline.update(&pos), &got[..]);
             one.assert_well_formed(&pos);
             assert_eq!(sorted(got), expected);
         }
