@@ -62,10 +62,14 @@ const X_SPLIT: usize = 2;
 const MAX_CELLS_PER_BODY: usize = 4;
 
 /// Cells per bucket of the first sorting level, a power of two at most `2^MAX_BUCKET_SHIFT`, chosen
-/// for at most `TARGET_BUCKETS` buckets: fewer output streams for the first level against larger
-/// buckets for the second. At N = 1,000,000 that is 18 buckets, which sorted faster than 69 or 275.
+/// for at most `TARGET_BUCKETS` buckets: fewer output streams for the first level against smaller
+/// buckets for the second. At N = 1,000,000 that is 275 buckets of about 3,600 bodies, whose
+/// second level works in cache even when the bodies have drifted from the cell order they were
+/// numbered in: in a simulation (bodies renumbered at creation, measured 60-80 frames later) the
+/// sort took 16 ms against 20 ms with 18 buckets, though 18 are 7% faster for bodies in random
+/// order.
 const MAX_BUCKET_SHIFT: u32 = 24;
-const TARGET_BUCKETS: usize = 32;
+const TARGET_BUCKETS: usize = 512;
 
 /// The regions a frame budget sheds tile the screen-facing x-y plane in at most this many columns
 /// and rows, and the depth in at most [`REGION_SLABS`] slabs: few enough that ordering them costs
