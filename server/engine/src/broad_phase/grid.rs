@@ -3,25 +3,27 @@
 //! Every box is the cube of half-size `h` around its body's centre (paper section 2), so two boxes
 //! overlap iff the centres are within `reach = 2h` on every axis. Cells are at least `reach` wide
 //! in y and z and at least `reach / 2` wide in x, so an overlapping pair lies in adjacent rows
-//! (y, z within one cell) and within two cells in x. Each unordered pair of rows is visited once:
-//! a row against itself and its four forward neighbours `(dy, dz)` = (1, 0), (-1, 1), (0, 1), (1, 1).
+//! (y, z within one cell) and within two cells in x.
 //!
 //! Why a grid at large N: sweep and prune keeps its sorted lists between frames (I-COLLIDE [5]),
 //! which is the right trade at the paper's N, but at a million bodies those lists are scattered
 //! through memory and their repair is dominated by cache misses. Here every pass is a forward scan
 //! over flat arrays:
-//! - the sort is a radix sort in two levels: bodies are read in id order and dealt into at most 32
-//!   contiguous *buckets* of cells (few enough output streams for the hardware prefetchers to
-//!   follow), then each bucket, a few megabytes at most, is counting-sorted by cell;
-//! - cells are numbered x fastest, so the x-cells `ix - 2 ..= ix + 2` of any row are one contiguous
-//!   slice: a body's candidates are five slices (its own row from the next body on, and the four
-//!   forward rows), each scanned a round of slots at a time in vector registers (the sorted
-//!   bodies are kept one array a coordinate for this) and without a branch on the (unpredictable)
-//!   overlap outcome; a slice holds 2.3 bodies on average at the paper's density, so most take
-//!   one round. A round is four slots on any x86-64 processor, and eight where the processor has
-//!   AVX-512 (chosen at run time): there a round's tests leave a bit mask and one instruction
-//!   packs the pairs it keeps, about 45 instructions a round against about 75 for four slots in
-//!   SSE2; both give the same pairs in the same order;
+//! - the sort is a radix sort in two levels: bodies are read in id order and dealt into a few
+//!   hundred contiguous *buckets* of cells at most, then each bucket, small enough to stay in
+//!   cache, is counting-sorted by cell;
+//! - the y-rows of a z-plane are taken in pairs, and a pair's cells are numbered x-cell by x-cell,
+//!   the two rows' cells of an x-cell side by side; so the x-cells `ix - 2 ..= ix + 2` of a pair
+//!   of rows are one contiguous slice. A body's candidates are four such slices (see
+//!   [`Rows::span`]), where rows taken one by one would need five, each scanned a round of slots
+//!   at a time in vector registers (the sorted bodies are kept one array a coordinate for this)
+//!   and without a branch on the (unpredictable) overlap outcome. A slice holds about 4.6 bodies
+//!   at the paper's density (the body's own, about half that), so with eight slots a round most
+//!   take one round;
+//! - a round is eight slots where the processor has AVX-512 (chosen at run time): a round's tests
+//!   leave a bit mask and one instruction packs the pairs it keeps, about 45 instructions a round.
+//!   On any other x86-64 processor a round is four slots in SSE2, about 75 instructions. Both give
+//!   the same pairs in the same order;
 //! - half-width x cells cut the candidates a body is tested against by about a sixth, compared with
 //!   cubic cells, for one more entry per cell in the cell index.
 //!
@@ -205,7 +207,8 @@ struct Dims {
 }
 
 impl Dims {
-    /// Cell of a centre, x fastest; positions outside the volume clamp to the edge cells.
+    /// Cell of a centre: numbered by z-plane, then pair of y-rows, then x-cell, then which row
+    /// of the pair; positions outside the volume clamp to the edge cells.
     #[inline]
     fn cell_of(&self, p: Vec3) -> u32 {
         let d = p - self.lo;
@@ -216,11 +219,27 @@ impl Dims {
         let ix = (d.x * self.inv_cell_x).clamp(0.0, (self.nx - 1) as f64) as u32 as usize;
         let iy = (d.y * self.inv_cell).clamp(0.0, top) as u32 as usize;
         let iz = (d.z * self.inv_cell).clamp(0.0, top) as u32 as usize;
-        ((iz * self.n + iy) * self.nx + ix) as u32
+        (((iz * self.row_pairs() + iy / 2) * self.nx + ix) * 2 + iy % 2) as u32
+    }
+
+    /// Pairs of y-rows in a z-plane (with an odd count of rows, the last pair's upper row has no
+    /// cell inside the volume and stays empty).
+    fn row_pairs(&self) -> usize {
+        self.n.div_ceil(2)
+    }
+
+    /// Cells in a pair of rows.
+    fn pair_cells(&self) -> usize {
+        2 * self.nx
+    }
+
+    /// Cells in a z-plane.
+    fn plane_cells(&self) -> usize {
+        self.row_pairs() * self.pair_cells()
     }
 
     fn cells(&self) -> usize {
-        self.n * self.n * self.nx
+        self.n * self.plane_cells()
     }
 }
 
@@ -240,7 +259,7 @@ pub(super) struct Grid {
     staged: Vec<Slot>,
     /// Bodies sorted by cell, then id.
     sorted: Sorted,
-    /// `start[c]..start[c + 1]` are cell c's slots; past the last cell, one row of empty cells
+    /// `start[c]..start[c + 1]` are cell c's slots; past the last cell, one pair of rows of empty cells
     /// stands in for the rows beyond the volume's faces.
     start: Vec<u32>,
     /// Per-part bucket counts of the first level (`parts` rows of `buckets`).
@@ -303,9 +322,10 @@ impl Grid {
         let per_bucket = cells.div_ceil(TARGET_BUCKETS).max(1);
         let bucket_shift = (usize::BITS - (per_bucket - 1).leading_zeros()).min(MAX_BUCKET_SHIFT);
         let buckets = cells.div_ceil(1 << bucket_shift);
+        // Regions hold whole pairs of rows, as the search visits them.
         let tile = [
             nx.div_ceil(REGION_TILES),
-            n.div_ceil(REGION_TILES),
+            n.div_ceil(REGION_TILES).next_multiple_of(2),
             n.div_ceil(REGION_SLABS),
         ];
         let tiles = [
@@ -339,7 +359,7 @@ impl Grid {
             cell_of_id: vec![0; bodies],
             staged: vec![Slot::default(); bodies],
             sorted: Sorted::new(bodies),
-            start: vec![0; cells + nx + 1],
+            start: vec![0; cells + dims.pair_cells() + 1],
             part_counts: Vec::new(),
             cursors: vec![vec![0; (1usize << bucket_shift).min(cells)]],
             threads: 1,
@@ -642,7 +662,7 @@ impl Grid {
         };
         let parts = self.parts();
         // Cut the z-planes where the running body count crosses k/parts of the total.
-        let plane = self.dims.n * self.dims.nx;
+        let plane = self.dims.plane_cells();
         let plane_starts: Vec<u32> = (0..=self.dims.n).map(|iz| self.start[iz * plane]).collect();
         let cuts = cut(&plane_starts, parts);
         let outs = std::iter::once(&mut self.pairs).chain(&mut self.partition_pairs);
@@ -746,56 +766,71 @@ impl Rows<'_> {
         buf: &mut Vec<(u32, u32)>,
         mut len: usize,
     ) -> usize {
+        // Regions hold whole pairs of rows; a range ending at an odd row count ends the plane.
         for iz in z {
-            for iy in y.clone() {
-                len = self.span(lanes, iz, iy, x.start, x.end, buf, len);
+            for pair in y.start / 2..y.end.div_ceil(2) {
+                len = self.span(lanes, iz, pair, x.start, x.end, buf, len);
             }
         }
         len
     }
 
-    /// The candidate pairs whose first body (in slot order) is in x-cells `x0..x1` of row
-    /// (`iy`, `iz`), body by body, written into `buf` from `len` on (growing it as needed);
-    /// returns the new length.
+    /// The candidate pairs whose first body (in slot order) is in x-cells `x0..x1` of the pair
+    /// of rows `pair` of z-plane `iz`, body by body, written into `buf` from `len` on (growing it
+    /// as needed); returns the new length.
+    ///
+    /// A body in row `iy` of the pair meets the other row of its own pair, and in the next plane
+    /// the rows `iy - 1 ..= iy + 1`, which lie in two pairs; the lower row of a pair meets the
+    /// row below it only through the pair below, whose upper row looks forward to it. So a body
+    /// has four windows, each the x-cells `ix - 2 ..= ix + 2` of a pair of rows, one slice:
+    /// - its own pair, from the next body on (the bodies before it found their pairs with it);
+    /// - in the upper row, the pair above in its plane (empty in the lower row);
+    /// - the next plane's pair below and its own pair (lower row), or its own pair and the pair
+    ///   above (upper row).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn span<L: Rounds>(
         &self,
         lanes: L,
         iz: usize,
-        iy: usize,
+        pair: usize,
         x0: usize,
         x1: usize,
         buf: &mut Vec<(u32, u32)>,
         mut len: usize,
     ) -> usize {
         let Dims { n, nx, .. } = self.dims;
-        let cells = self.dims.cells();
+        let (cells, row) = (self.dims.cells(), self.dims.pair_cells());
         let (start, sorted, r) = (self.start, self.sorted, self.reach);
-        let row = (iz * n + iy) * nx;
-        let up = row + n * nx;
-        // Forward rows (dy, dz) = (1, 0), (-1, 1), (0, 1), (1, 1); `cells` is the empty row.
-        let next = [
-            if iy + 1 < n { row + nx } else { cells },
-            if iz + 1 < n && iy > 0 { up - nx } else { cells },
-            if iz + 1 < n { up } else { cells },
-            if iz + 1 < n && iy + 1 < n {
-                up + nx
-            } else {
-                cells
-            },
-        ];
+        let own = (iz * self.dims.row_pairs() + pair) * row;
+        let up = own + self.dims.plane_cells();
+        let higher = pair + 1 < self.dims.row_pairs();
+        let next = iz + 1 < n;
+        // Pairs of rows by where they are; `cells` is the empty pair.
+        let above = if higher { own + row } else { cells };
+        let next_below = if next && pair > 0 { up - row } else { cells };
+        let next_own = if next { up } else { cells };
+        let next_above = if next && higher { up + row } else { cells };
         let SortedRef { x, y, z, id, cell } = sorted;
         // One length for all five arrays, so that one bounds check covers a round's loads.
         let slots = x.len();
         let (y, z, id, cell) = (&y[..slots], &z[..slots], &id[..slots], &cell[..slots]);
         let sorted = SortedRef { x, y, z, id, cell };
-        for i in start[row + x0] as usize..start[row + x1] as usize {
-            let ix = cell[i] as usize - row;
+        for i in start[own + 2 * x0] as usize..start[own + 2 * x1] as usize {
+            let at = cell[i] as usize - own;
+            let (ix, upper) = (at / 2, at % 2 == 1);
             let (p, pid) = ([x[i], y[i], z[i]], id[i]);
-            let (lo, hi) = (ix.saturating_sub(X_SPLIT), (ix + X_SPLIT + 1).min(nx));
-            let mut windows = [(i + 1, start[row + hi] as usize); 5];
-            for (w, &b) in windows[1..].iter_mut().zip(&next) {
+            let (lo, hi) = (
+                2 * ix.saturating_sub(X_SPLIT),
+                2 * (ix + X_SPLIT + 1).min(nx),
+            );
+            let others = if upper {
+                [above, next_own, next_above]
+            } else {
+                [cells, next_below, next_own]
+            };
+            let mut windows = [(i + 1, start[own + hi] as usize); 4];
+            for (w, &b) in windows[1..].iter_mut().zip(&others) {
                 *w = (start[b + lo] as usize, start[b + hi] as usize);
             }
             let most: usize = windows.iter().map(|w| w.1 - w.0 + L::WIDTH).sum();
