@@ -659,7 +659,7 @@ mod tests {
             &world,
             usize::MAX,
             1,
-            &|p: &crate::narrow_phase::PairState| (p.a + p.b) % 3 == 0,
+            &|p: &crate::narrow_phase::PairState| (p.a + p.b).is_multiple_of(3),
             &mut |_| true,
         );
         np.deem_open();

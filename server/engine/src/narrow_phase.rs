@@ -1614,7 +1614,7 @@ mod tests {
     fn resolving_a_selection_settles_whole_pairs_on_any_thread_count() {
         let (tree, world, pairs) = paper_pairs(1_500, 4, 4);
         let prefix = pairs.len() * 3 / 4;
-        let select = |p: &PairState| (p.a + p.b) % 3 != 0;
+        let select = |p: &PairState| !(p.a + p.b).is_multiple_of(3);
         let mut alone = NarrowPhase::default();
         alone.reset(&pairs);
         let mut want = 0;

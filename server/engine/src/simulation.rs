@@ -344,7 +344,7 @@ impl Simulation {
         let tr = if every > 0
             && deadline.is_none()
             && self.next_index > 0
-            && self.next_index % every == 0
+            && self.next_index.is_multiple_of(every)
             && self.broad.has_spatial_order()
         {
             self.renumber();

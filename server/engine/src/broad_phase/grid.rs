@@ -819,7 +819,11 @@ impl Rows<'_> {
         for i in start[own + 2 * x0] as usize..start[own + 2 * x1] as usize {
             let at = cell[i] as usize - own;
             let (ix, upper) = (at / 2, at % 2 == 1);
-            let (p, pid) = ([x[i], y[i], z[i]], id[i]);
+            let p = Probe {
+                at: [x[i], y[i], z[i]],
+                id: id[i],
+                reach: r,
+            };
             let (lo, hi) = (
                 2 * ix.saturating_sub(X_SPLIT),
                 2 * (ix + X_SPLIT + 1).min(nx),
@@ -844,7 +848,7 @@ impl Rows<'_> {
                 let mut k = b0;
                 loop {
                     let round = &mut buf[len..len + L::WIDTH];
-                    len += lanes.round(sorted, k, b1, (p, pid), r, round);
+                    len += lanes.round(sorted, k, b1, p, round);
                     k += L::WIDTH;
                     if k >= b1 {
                         break;
@@ -866,15 +870,16 @@ trait Rounds: Copy {
     /// [`super::brute_force_pairs`] has it: |q - p| <= reach on every axis, in f64) to `out`,
     /// in slot order, each as (smaller id, larger id); returns how many. Every slot's pair may be
     /// written, so `out` has [`Self::WIDTH`] slots; the slots exist (padding, [`PAD`]).
-    fn round(
-        self,
-        s: SortedRef<'_>,
-        k: usize,
-        b1: usize,
-        p: ([f64; 3], u32),
-        reach: f64,
-        out: &mut [(u32, u32)],
-    ) -> usize;
+    fn round(self, s: SortedRef, k: usize, b1: usize, p: Probe, out: &mut [(u32, u32)]) -> usize;
+}
+
+/// The body a window is searched for: its centre, its id, and how far a centre may be on each
+/// axis for the boxes to overlap.
+#[derive(Clone, Copy)]
+struct Probe {
+    at: [f64; 3],
+    id: u32,
+    reach: f64,
 }
 
 /// Rounds of [`LANES`] slots in the baseline's vector registers (SSE2: two lanes of f64 each).
@@ -885,20 +890,12 @@ impl Rounds for Baseline {
     const WIDTH: usize = LANES;
 
     #[inline(always)]
-    fn round(
-        self,
-        s: SortedRef<'_>,
-        k: usize,
-        b1: usize,
-        (p, pid): ([f64; 3], u32),
-        reach: f64,
-        out: &mut [(u32, u32)],
-    ) -> usize {
-        let hits = near(s.x, s.y, s.z, k, p, reach) & ((1 << (b1 - k).min(LANES)) - 1);
+    fn round(self, s: SortedRef, k: usize, b1: usize, p: Probe, out: &mut [(u32, u32)]) -> usize {
+        let hits = near(s.x, s.y, s.z, k, p.at, p.reach) & ((1 << (b1 - k).min(LANES)) - 1);
         // Every slot's pair is written and the cursor advanced by its test, so the unpredictable
         // outcome costs no branch.
         let q: [u32; LANES] = s.id[k..k + LANES].try_into().unwrap_or([0; LANES]);
-        put_lanes(out, pid, q, hits)
+        put_lanes(out, p.id, q, hits)
     }
 }
 
@@ -914,15 +911,7 @@ impl Rounds for Avx512 {
     const WIDTH: usize = 8;
 
     #[inline(always)]
-    fn round(
-        self,
-        s: SortedRef<'_>,
-        k: usize,
-        b1: usize,
-        (p, pid): ([f64; 3], u32),
-        reach: f64,
-        out: &mut [(u32, u32)],
-    ) -> usize {
+    fn round(self, s: SortedRef, k: usize, b1: usize, p: Probe, out: &mut [(u32, u32)]) -> usize {
         use std::arch::x86_64::{__m256i, __m512d, _CMP_LE_OQ};
         let f = self.0.avx512f;
         let live = ((1u32 << (b1 - k).min(8)) - 1) as u8;
@@ -930,11 +919,11 @@ impl Rounds for Avx512 {
         let axis = |v: &[f64], c: f64, mask: u8| {
             let v: __m512d = pulp::cast(<[f64; 8]>::try_from(&v[k..k + 8]).unwrap_or([0.0; 8]));
             let d = f._mm512_abs_pd(f._mm512_sub_pd(v, f._mm512_set1_pd(c)));
-            f._mm512_mask_cmp_pd_mask::<_CMP_LE_OQ>(mask, d, f._mm512_set1_pd(reach))
+            f._mm512_mask_cmp_pd_mask::<_CMP_LE_OQ>(mask, d, f._mm512_set1_pd(p.reach))
         };
-        let hits = axis(s.z, p[2], axis(s.y, p[1], axis(s.x, p[0], live)));
+        let hits = axis(s.z, p.at[2], axis(s.y, p.at[1], axis(s.x, p.at[0], live)));
         let q: __m256i = pulp::cast(<[u32; 8]>::try_from(&s.id[k..k + 8]).unwrap_or([0; 8]));
-        let own = self.0.avx._mm256_set1_epi32(pid as i32);
+        let own = self.0.avx._mm256_set1_epi32(p.id as i32);
         let (lo, hi) = (
             self.0.avx2._mm256_min_epu32(q, own),
             self.0.avx2._mm256_max_epu32(q, own),
