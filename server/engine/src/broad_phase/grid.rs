@@ -17,7 +17,7 @@
 //!   of rows are one contiguous slice. A body's candidates are four such slices (see
 //!   [`Rows::span`]), where rows taken one by one would need five, each scanned a round of slots
 //!   at a time in vector registers (the sorted bodies are kept one array a coordinate for this)
-//!   and without a branch on the (unpredictable) overlap outcome. A slice holds about 4.6 bodies
+//!   and without a branch on the (unpredictable) overlap outcome. A slice holds about 4.4 bodies
 //!   at the paper's density (the body's own, about half that), so with eight slots a round most
 //!   take one round;
 //! - a round is eight slots where the processor has AVX-512 (chosen at run time): a round's tests
@@ -259,8 +259,8 @@ pub(super) struct Grid {
     staged: Vec<Slot>,
     /// Bodies sorted by cell, then id.
     sorted: Sorted,
-    /// `start[c]..start[c + 1]` are cell c's slots; past the last cell, one pair of rows of empty cells
-    /// stands in for the rows beyond the volume's faces.
+    /// `start[c]..start[c + 1]` are cell c's slots; past the last cell, one pair of rows of empty
+    /// cells stands in for the rows beyond the volume's faces.
     start: Vec<u32>,
     /// Per-part bucket counts of the first level (`parts` rows of `buckets`).
     part_counts: Vec<u32>,
