@@ -761,7 +761,7 @@ impl Rows<'_> {
     #[inline(always)]
     fn search_in<L: Rounds>(
         &self,
-        lanes: L,
+        rounds: L,
         [z, y, x]: [Range<usize>; 3],
         buf: &mut Vec<(u32, u32)>,
         mut len: usize,
@@ -769,7 +769,7 @@ impl Rows<'_> {
         // Regions hold whole pairs of rows; a range ending at an odd row count ends the plane.
         for iz in z {
             for pair in y.start / 2..y.end.div_ceil(2) {
-                len = self.span(lanes, iz, pair, x.start, x.end, buf, len);
+                len = self.span(rounds, iz, pair, x.start, x.end, buf, len);
             }
         }
         len
@@ -791,7 +791,7 @@ impl Rows<'_> {
     #[allow(clippy::too_many_arguments)]
     fn span<L: Rounds>(
         &self,
-        lanes: L,
+        rounds: L,
         iz: usize,
         pair: usize,
         x0: usize,
@@ -848,7 +848,7 @@ impl Rows<'_> {
                 let mut k = b0;
                 loop {
                     let round = &mut buf[len..len + L::WIDTH];
-                    len += lanes.round(sorted, k, b1, p, round);
+                    len += rounds.round(sorted, k, b1, p, round);
                     k += L::WIDTH;
                     if k >= b1 {
                         break;

@@ -47,8 +47,8 @@ pub const SHRINK_AFTER_FRAMES: u32 = 120;
 /// Pairs of headroom the shrink rule always allows, so small scenes never reallocate.
 pub const PAIR_SLACK: usize = 1024;
 
-/// Candidates of one body tested at once by both broad phases: four f64 lanes (two SSE2
-/// registers, one AVX register).
+/// Candidates of one body tested at once by sweep and prune, and by the grid where the processor
+/// has no AVX-512 (the grid's wider rounds are its own): four f64 lanes (two SSE2 registers).
 const LANES: usize = 4;
 
 /// Write body `p`'s pair with each of the [`LANES`] candidates `q` to `out`, kept (the cursor
