@@ -10,8 +10,8 @@
 //! through memory and their repair is dominated by cache misses. Here every pass is a forward scan
 //! over flat arrays:
 //! - the sort is a radix sort in two levels: bodies are read in id order and dealt into a few
-//!   hundred contiguous *buckets* of cells at most, then each bucket, small enough to stay in
-//!   cache, is counting-sorted by cell;
+//!   hundred contiguous *buckets* of cells at most (sized by the last frame's counts, so in one
+//!   pass), then each bucket, small enough to stay in cache, is counting-sorted by cell;
 //! - the y-rows of a z-plane are taken in pairs, and a pair's cells are numbered x-cell by x-cell,
 //!   the two rows' cells of an x-cell side by side; so the x-cells `ix - 2 ..= ix + 2` of a pair
 //!   of rows are one contiguous slice. A body's candidates are four such slices (see
@@ -27,10 +27,10 @@
 //! - half-width x cells cut the candidates a body is tested against by about a sixth, compared with
 //!   cubic cells, for one more entry per cell in the cell index.
 //!
-//! Memory is fixed by N: 68 bytes per body (its cell, and the body in 32 bytes twice: dealt into
-//! its bucket, and sorted, one array a field), 4 bytes per cell (about 2.2 cells per body at the
-//! paper's density, at most 4 plus a constant), and the pair buffer, which shrinks after a
-//! pathological frame (see [`super::SHRINK_AFTER_FRAMES`]).
+//! Memory is fixed by N: about 66 bytes per body (the body in 32 bytes twice: dealt into its
+//! bucket, with a sixteenth of room to spare, and sorted, one array a field), 4 bytes per cell
+//! (about 2.2 cells per body at the paper's density, at most 4 plus a constant), and the pair
+//! buffer, which shrinks after a pathological frame (see [`super::SHRINK_AFTER_FRAMES`]).
 //!
 //! The output depends only on this frame's positions: bodies are ordered by cell, then by id, and
 //! pairs are listed body by body in that order. It does not depend on how many threads produce it:
@@ -83,6 +83,11 @@ const REGION_TILES: usize = 16;
 /// with whole columns 112 of 256 regions could hold a pair within 5 degrees of a central
 /// fixation; cut into slabs, only the slabs the fovea's cone passes through do.
 const REGION_SLABS: usize = 4;
+
+/// Room a bucket's segment keeps for bodies beyond its last count (see [`Grid::sort`]): a
+/// sixteenth more, and at least this many: a few frames' drift across the buckets' edges.
+const SEGMENT_SLACK_DIVISOR: u32 = 16;
+const SEGMENT_SLACK_MIN: u32 = 16;
 
 /// Slots past the last body in each of [`Sorted`]'s arrays: the widest round's.
 const PAD: usize = 8;
@@ -251,11 +256,15 @@ pub(super) struct Grid {
     bodies: usize,
     /// First-level buckets hold `2^bucket_shift` consecutive cells each.
     bucket_shift: u32,
-    /// `bucket_start[b]..bucket_start[b + 1]` are bucket b's slots (in `staged` and `sorted`).
+    /// `bucket_start[b]..bucket_start[b + 1]` are bucket b's slots in `sorted`.
     bucket_start: Vec<u32>,
-    /// Cell of each body, in id order (computed once per frame by the first level's count).
-    cell_of_id: Vec<u32>,
-    /// Bodies dealt into buckets, in id order within a bucket.
+    /// Slots of each part's segment of each bucket in `staged` (`parts` rows of `buckets`).
+    segment_room: Vec<u32>,
+    /// Where each segment starts in `staged`, bucket by bucket, part by part within a bucket.
+    segment_start: Vec<u32>,
+    /// Passes the last sort's first level took over the bodies (1, or 2 after an overflow).
+    deal_passes: u8,
+    /// Bodies dealt into buckets: each part's segment of a bucket in id order (see `deal`).
     staged: Vec<Slot>,
     /// Bodies sorted by cell, then id.
     sorted: Sorted,
@@ -356,8 +365,10 @@ impl Grid {
             bodies,
             bucket_shift,
             bucket_start: vec![0; buckets + 1],
-            cell_of_id: vec![0; bodies],
-            staged: vec![Slot::default(); bodies],
+            segment_room: Vec::new(),
+            segment_start: Vec::new(),
+            deal_passes: 0,
+            staged: Vec::new(),
             sorted: Sorted::new(bodies),
             start: vec![0; cells + dims.pair_cells() + 1],
             part_counts: Vec::new(),
@@ -543,69 +554,40 @@ impl Grid {
     }
 
     /// Two-level counting sort by cell, stable in id. With several parts, the bodies are split
-    /// into consecutive id ranges for the first level and the buckets into consecutive ranges for
+    /// into consecutive id ranges for the first level and the buckets into consecutive runs for
     /// the second; every body lands in the same slot as with one part.
+    ///
+    /// The first level deals the bodies in one pass, each part into its own segment of every
+    /// bucket, sized by the last frame's counts with some slack: bodies drift a little from
+    /// frame to frame, so the counts of this frame are rarely needed before dealing, and a
+    /// separate counting pass would read every position twice. A segment that overflows (a
+    /// first frame, or bodies crowding into a few buckets) costs a second pass, with segments
+    /// fitted to the counts the first one made.
     fn sort(&mut self, positions: &[Vec3]) {
         let dims = self.dims;
         let shift = self.bucket_shift;
         let parts = self.parts();
         let buckets = self.bucket_start.len() - 1;
         let per_part = positions.len().div_ceil(parts).max(1);
-        // Level 1: count per part.
-        self.part_counts.clear();
-        self.part_counts.resize(parts * buckets, 0);
-        let items = positions
-            .chunks(per_part)
-            .zip(self.cell_of_id.chunks_mut(per_part))
-            .zip(self.part_counts.chunks_mut(buckets))
-            .collect();
-        in_parallel(
-            items,
-            |((chunk, cells), counts): ((&[Vec3], &mut [u32]), &mut [u32])| {
-                for (&p, cell) in chunk.iter().zip(cells) {
-                    *cell = dims.cell_of(p);
-                    counts[(*cell >> shift) as usize] += 1;
-                }
-            },
-        );
-        // Each bucket holds part 0's bodies, then part 1's, ..., so ids stay in order.
-        let mut rest: &mut [Slot] = &mut self.staged;
-        let mut outputs: Vec<Vec<&mut [Slot]>> = (0..parts).map(|_| Vec::new()).collect();
+        if self.segment_room.len() != parts * buckets {
+            self.segment_room.clear();
+            self.segment_room.resize(parts * buckets, 0);
+        }
+        self.deal_passes = 1;
+        if !self.deal(positions, per_part) {
+            self.deal_passes = 2;
+            for (room, &count) in self.segment_room.iter_mut().zip(&self.part_counts) {
+                *room = count + count / SEGMENT_SLACK_DIVISOR + SEGMENT_SLACK_MIN;
+            }
+            let fitted = self.deal(positions, per_part);
+            debug_assert!(fitted, "segments fitted to the counts overflowed");
+        }
+        // Bucket b's bodies, in their final order of slots.
         self.bucket_start[0] = 0;
         for b in 0..buckets {
-            let mut total = self.bucket_start[b];
-            for (t, out) in outputs.iter_mut().enumerate() {
-                let count = self.part_counts[t * buckets + b];
-                let (head, tail) = std::mem::take(&mut rest).split_at_mut(count as usize);
-                out.push(head);
-                rest = tail;
-                total += count;
-            }
-            self.bucket_start[b + 1] = total;
+            let dealt: u32 = (0..parts).map(|t| self.part_counts[t * buckets + b]).sum();
+            self.bucket_start[b + 1] = self.bucket_start[b] + dealt;
         }
-        // Level 1: deal each part's bodies into its share of every bucket.
-        let items = positions
-            .chunks(per_part)
-            .zip(self.cell_of_id.chunks(per_part))
-            .zip(outputs)
-            .enumerate()
-            .collect();
-        type Deal<'a, 'b> = (usize, ((&'a [Vec3], &'a [u32]), Vec<&'b mut [Slot]>));
-        in_parallel(items, |(t, ((chunk, cells), mut out)): Deal<'_, '_>| {
-            for (k, (&p, &cell)) in chunk.iter().zip(cells).enumerate() {
-                let b = (cell >> shift) as usize;
-                if let Some((slot, tail)) = std::mem::take(&mut out[b]).split_first_mut() {
-                    *slot = Slot {
-                        x: p.x,
-                        y: p.y,
-                        z: p.z,
-                        id: (t * per_part + k) as u32,
-                        cell,
-                    };
-                    out[b] = tail;
-                }
-            }
-        });
         // Level 2: counting sort of each bucket by cell, parts taking consecutive buckets.
         let cells = dims.cells();
         let cuts = cut(&self.bucket_start, parts);
@@ -623,33 +605,107 @@ impl Grid {
             items.push((b0..b1, dest, index, cursor));
         }
         let (staged, bucket_start) = (&self.staged[..], &self.bucket_start[..]);
+        let (segment_start, part_counts) = (&self.segment_start[..], &self.part_counts[..]);
         in_parallel(items, |(range, mut dest, index, cursor)| {
             let (s_base, c_base) = (bucket_start[range.start] as usize, range.start << shift);
             for b in range {
-                let (s0, s1) = (bucket_start[b] as usize, bucket_start[b + 1] as usize);
+                // The bucket's bodies: part 0's segment, then part 1's, ..., so ids stay in order.
+                let segments = (0..parts).map(|t| {
+                    let s0 = segment_start[b * parts + t] as usize;
+                    &staged[s0..s0 + part_counts[t * buckets + b] as usize]
+                });
                 let c0 = b << shift;
                 let c1 = ((b + 1) << shift).min(cells);
                 let count = &mut cursor[..c1 - c0];
                 count.fill(0);
-                for s in &staged[s0..s1] {
-                    count[s.cell as usize - c0] += 1;
+                for segment in segments.clone() {
+                    for s in segment {
+                        count[s.cell as usize - c0] += 1;
+                    }
                 }
-                let mut at = s0 as u32;
+                let mut at = bucket_start[b];
                 for (k, c) in count.iter_mut().enumerate() {
                     index[c0 - c_base + k] = at;
                     (at, *c) = (at + *c, at);
                 }
                 // Five destination arrays: touching them in order first, as paid for a single
                 // array of slots, no longer measured faster than the scatter alone.
-                for s in &staged[s0..s1] {
-                    let k = s.cell as usize - c0;
-                    dest.put(count[k] as usize - s_base, s);
-                    count[k] += 1;
+                for segment in segments {
+                    for s in segment {
+                        let k = s.cell as usize - c0;
+                        dest.put(count[k] as usize - s_base, s);
+                        count[k] += 1;
+                    }
                 }
             }
         });
         // The end of the last cell, and the row of empty cells beyond it.
         self.start[cells..].fill(self.bodies as u32);
+    }
+
+    /// Deal every body into its part's segment of its bucket (level 1 of [`Self::sort`]),
+    /// counting each segment's bodies into `part_counts`; whether every segment had room. The
+    /// segments take `segment_room` slots each, bucket by bucket and part by part within one.
+    fn deal(&mut self, positions: &[Vec3], per_part: usize) -> bool {
+        let (dims, shift) = (self.dims, self.bucket_shift);
+        let buckets = self.bucket_start.len() - 1;
+        let parts = self.segment_room.len() / buckets;
+        self.segment_start.clear();
+        self.segment_start.push(0);
+        let mut total = 0;
+        for b in 0..buckets {
+            for t in 0..parts {
+                total += self.segment_room[t * buckets + b];
+                self.segment_start.push(total);
+            }
+        }
+        let total = total as usize;
+        self.staged.resize(total, Slot::default());
+        if self.staged.capacity() > 2 * total + SEGMENT_SLACK_MIN as usize {
+            self.staged.shrink_to(total);
+        }
+        let mut rest: &mut [Slot] = &mut self.staged;
+        let mut outputs: Vec<Vec<&mut [Slot]>> =
+            (0..parts).map(|_| Vec::with_capacity(buckets)).collect();
+        for b in 0..buckets {
+            for (t, out) in outputs.iter_mut().enumerate() {
+                let room = self.segment_room[t * buckets + b] as usize;
+                let (head, tail) = std::mem::take(&mut rest).split_at_mut(room);
+                out.push(head);
+                rest = tail;
+            }
+        }
+        self.part_counts.clear();
+        self.part_counts.resize(parts * buckets, 0);
+        let items = positions
+            .chunks(per_part)
+            .zip(outputs)
+            .zip(self.part_counts.chunks_mut(buckets))
+            .enumerate()
+            .collect();
+        type Deal<'a, 'b> = (usize, ((&'a [Vec3], Vec<&'b mut [Slot]>), &'a mut [u32]));
+        in_parallel(items, |(t, ((chunk, mut out), counts)): Deal<'_, '_>| {
+            for (k, &p) in chunk.iter().enumerate() {
+                let cell = dims.cell_of(p);
+                let b = (cell >> shift) as usize;
+                let dealt = counts[b];
+                // Past a segment's room the body is only counted: the caller deals again.
+                if let Some(slot) = out[b].get_mut(dealt as usize) {
+                    *slot = Slot {
+                        x: p.x,
+                        y: p.y,
+                        z: p.z,
+                        id: (t * per_part + k) as u32,
+                        cell,
+                    };
+                }
+                counts[b] = dealt + 1;
+            }
+        });
+        (0..parts * buckets).all(|k| {
+            let (t, b) = (k / buckets, k % buckets);
+            self.part_counts[k] <= self.segment_room[t * buckets + b]
+        })
     }
 
     fn find_pairs(&mut self) {
@@ -1009,4 +1065,66 @@ fn cut(at: &[u32], parts: usize) -> Vec<usize> {
     }
     cuts.push(items);
     cuts
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::broad_phase::brute_force_pairs;
+
+    /// The first sorting level deals in one pass while the bodies drift, and in two in a frame
+    /// that moves them across buckets wholesale (a first frame, a clump), after which one pass
+    /// suffices again; its staging never holds more than the
+    /// bodies and their slack, and every frame's pairs are brute force's, on one and two parts.
+    #[test]
+    fn the_deal_takes_one_pass_while_bodies_drift_and_two_after_a_jump() {
+        let (n, side, half) = (4_000usize, 7.0, 0.222);
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut unit = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let spread: Vec<Vec3> = (0..n)
+            .map(|_| Vec3::new(unit(), unit(), unit()) * side)
+            .collect();
+        let nudge: Vec<Vec3> = (0..n)
+            .map(|_| (Vec3::new(unit(), unit(), unit()) - 0.5) * 0.02)
+            .collect();
+        let drifted = |frames: f64| -> Vec<Vec3> {
+            spread
+                .iter()
+                .zip(&nudge)
+                .map(|(&p, &v)| p + v * frames)
+                .collect()
+        };
+        let clump = vec![Vec3::splat(side / 2.0); n];
+        // (positions, passes the deal must take): the clump's dispersal fits its segments'
+        // slack on some partitions, so its passes are not prescribed.
+        let mut script = vec![(drifted(0.0), Some(2))];
+        script.extend((1..6).map(|f| (drifted(f as f64), Some(1))));
+        script.push((clump, Some(2)));
+        script.push((drifted(6.0), None));
+        script.extend((7..10).map(|f| (drifted(f as f64), Some(1))));
+        for parts in [1, 2] {
+            let mut g = Grid::new(half, Vec3::ZERO, side, n);
+            g.partition_tiny_scenes();
+            g.set_threads(parts);
+            let buckets = g.bucket_start.len() - 1;
+            for (f, (positions, passes)) in script.iter().enumerate() {
+                g.update(positions);
+                if let Some(passes) = passes {
+                    assert_eq!(g.deal_passes, *passes, "{parts} parts, frame {f}");
+                }
+                let room = n + n / SEGMENT_SLACK_DIVISOR as usize;
+                let most = room + parts * buckets * SEGMENT_SLACK_MIN as usize;
+                assert!(g.staged.len() <= most, "{parts} parts, frame {f}");
+                g.assert_well_formed(positions);
+                let mut got = g.pairs().to_vec();
+                got.sort_unstable();
+                assert_eq!(got, brute_force_pairs(positions, half), "frame {f}");
+            }
+        }
+    }
 }
