@@ -15,6 +15,8 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use glam::Vec4;
+#[cfg(target_arch = "x86_64")]
+use pulp::x86::V3;
 
 use crate::math::{LMat3, LVec3, Vec3};
 use crate::sphere_tree::{LANES, SphereTree};
@@ -286,6 +288,9 @@ pub struct NarrowPhase {
     /// What the last [`Self::resolve_selected`] of this frame found of each pair of its prefix:
     /// [`MARK_UNSEEN`], [`MARK_OUT`] or [`MARK_IN`] (empty after a reset).
     marks: Vec<u8>,
+    /// Test four children at a time even where the processor has eight-lane vectors (tests
+    /// compare the two).
+    four_lanes_only: bool,
 }
 
 /// A pair of [`NarrowPhase::selection_marks`] that the selection did not reach.
@@ -432,6 +437,7 @@ impl NarrowPhase {
             pairs: &mut self.pairs,
             frames: &mut self.frames,
             one_frame: false,
+            wide: !self.four_lanes_only,
             arena: &mut self.arena,
             scratch: &mut self.scratch,
             witness: &self.witness,
@@ -525,7 +531,7 @@ impl NarrowPhase {
             self.run_hits.resize_with(run_count, Vec::new);
         }
         self.make_lanes(parts);
-        let witness = &self.witness;
+        let (witness, wide) = (&self.witness, !self.four_lanes_only);
         let mut first_arena = std::mem::take(&mut self.arena);
         let candidates: Box<dyn Iterator<Item = &[(u32, u32)]>> = match fresh {
             Some(c) => Box::new(c.chunks(size)),
@@ -563,24 +569,13 @@ impl NarrowPhase {
                     pairs,
                     frames: &mut slot,
                     one_frame: true,
+                    wide,
                     arena: &mut *arena,
                     scratch: &mut *scratch,
                     witness,
                     tests: &mut count,
                 };
-                for i in 0..lane.pairs.len() {
-                    if let Some(&(a, b)) = cands.get(i) {
-                        lane.pairs[i] = PairState::new(a, b);
-                    }
-                    if lane.pairs[i].status.is_open() {
-                        lane.resolve_pair(i, tree, world);
-                        // Resolved pairs keep no list: one pair's descent at a time.
-                        lane.arena.clear();
-                    }
-                    if lane.pairs[i].status == PairStatus::Colliding {
-                        hits.push((base + i) as u32);
-                    }
-                }
+                lane.resolve_run(cands, base, hits, tree, world);
             }
             count
         };
@@ -683,7 +678,7 @@ impl NarrowPhase {
         }
         let size = (n / (parts * RUNS_PER_THREAD)).clamp(MIN_RUN, MAX_RUN);
         self.make_lanes(parts);
-        let witness = &self.witness;
+        let (witness, wide) = (&self.witness, !self.four_lanes_only);
         let mut first_arena = std::mem::take(&mut self.arena);
         let runs: Vec<Mutex<(&mut [PairState], &mut [u8])>> = self.pairs[..n]
             .chunks_mut(size)
@@ -710,6 +705,7 @@ impl NarrowPhase {
                     pairs,
                     frames: &mut slot,
                     one_frame: true,
+                    wide,
                     arena: &mut *arena,
                     scratch: &mut *scratch,
                     witness,
@@ -915,6 +911,8 @@ struct Lane<'a> {
     frames: &'a mut [PairFrame],
     /// Pairs are resolved one at a time, each in one go: every pair's frame is `frames[0]`.
     one_frame: bool,
+    /// Test eight children at a time where the processor can ([`Avx2`]).
+    wide: bool,
     arena: &'a mut Vec<[u16; 2]>,
     scratch: &'a mut [Vec<[u16; 2]>; 2],
     witness: &'a [Witness],
@@ -928,11 +926,95 @@ impl Lane<'_> {
         if self.one_frame { 0 } else { i }
     }
 
+    /// Advance pair `i` by one level of one tree, in the widest [`Kernel`] the processor has.
+    fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
+        #[cfg(target_arch = "x86_64")]
+        if self.wide
+            && let Some(simd) = V3::try_new()
+        {
+            return simd.vectorize(
+                #[inline(always)]
+                || self.step_in(Avx2(simd), i, tree, world),
+            );
+        }
+        self.step_in(Baseline, i, tree, world)
+    }
+
+    /// Step pair `i` until it is resolved ([`Self::resolve_pair_in`]), in the widest
+    /// [`Kernel`] the processor has.
+    fn resolve_pair(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
+        #[cfg(target_arch = "x86_64")]
+        if self.wide
+            && let Some(simd) = V3::try_new()
+        {
+            return simd.vectorize(
+                #[inline(always)]
+                || self.resolve_pair_in(Avx2(simd), i, tree, world),
+            );
+        }
+        self.resolve_pair_in(Baseline, i, tree, world)
+    }
+
+    /// Resolve every open pair of the lane in one go, each pair's state first written from
+    /// `cands` where it has one (index-parallel), listing the colliding pairs (numbered from
+    /// `base`) in `hits`: a run of [`NarrowPhase::resolve_runs`], the processor asked once for
+    /// its widest [`Kernel`].
+    fn resolve_run(
+        &mut self,
+        cands: &[(u32, u32)],
+        base: usize,
+        hits: &mut Vec<u32>,
+        tree: &SphereTree,
+        world: &World,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if self.wide
+            && let Some(simd) = V3::try_new()
+        {
+            return simd.vectorize(
+                #[inline(always)]
+                || self.resolve_run_in(Avx2(simd), cands, base, hits, tree, world),
+            );
+        }
+        self.resolve_run_in(Baseline, cands, base, hits, tree, world)
+    }
+
+    #[inline(always)]
+    fn resolve_run_in<K: Kernel>(
+        &mut self,
+        kernel: K,
+        cands: &[(u32, u32)],
+        base: usize,
+        hits: &mut Vec<u32>,
+        tree: &SphereTree,
+        world: &World,
+    ) {
+        for i in 0..self.pairs.len() {
+            if let Some(&(a, b)) = cands.get(i) {
+                self.pairs[i] = PairState::new(a, b);
+            }
+            if self.pairs[i].status.is_open() {
+                self.resolve_pair_in(kernel, i, tree, world);
+                // Resolved pairs keep no list: one pair's descent at a time.
+                self.arena.clear();
+            }
+            if self.pairs[i].status == PairStatus::Colliding {
+                hits.push((base + i) as u32);
+            }
+        }
+    }
+
     /// Advance pair `i` by one level of one tree. A pair that collided last frame first re-tests the
     /// leaf pair that proved it (one test); if that still overlaps, the pair is resolved colliding
     /// at the leaves, exactly as its full descent would have.
-    #[inline]
-    fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
+    #[inline(always)]
+    fn step_in<K: Kernel>(
+        &mut self,
+        kernel: K,
+        i: usize,
+        tree: &SphereTree,
+        world: &World,
+    ) -> StepOutcome {
         let depth = tree.depth() as u8;
         let p = self.pairs[i];
         debug_assert!(p.status.is_open());
@@ -991,7 +1073,7 @@ impl Lane<'_> {
         let start = self.arena.len();
         self.arena.resize(start + (hi - lo) * 8, [0, 0]);
         let (head, out) = self.arena.split_at_mut(start);
-        let (found, tests) = expand(tree, &frame, descend_a, at_leaves, &head[lo..hi], out);
+        let (found, tests) = kernel.expand(tree, &frame, descend_a, at_leaves, &head[lo..hi], out);
         self.arena.truncate(start + found);
         *self.tests += tests;
         let st = &mut self.pairs[i];
@@ -1015,8 +1097,15 @@ impl Lane<'_> {
     /// tests in the same order, the same state at the end), but after the first step the descent
     /// runs level after level between two scratch lists instead of through the pair's state and
     /// the arena, which costs a store and a reload of both per level.
-    fn resolve_pair(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
-        let o = self.step(i, tree, world);
+    #[inline(always)]
+    fn resolve_pair_in<K: Kernel>(
+        &mut self,
+        kernel: K,
+        i: usize,
+        tree: &SphereTree,
+        world: &World,
+    ) -> StepOutcome {
+        let o = self.step_in(kernel, i, tree, world);
         if o != StepOutcome::Active {
             return o;
         }
@@ -1044,7 +1133,7 @@ impl Lane<'_> {
             if next.len() < len * 8 {
                 next.resize(len * 8, [0, 0]);
             }
-            let (found, tests) = expand(
+            let (found, tests) = kernel.expand(
                 tree,
                 &frame,
                 descend_a,
@@ -1182,6 +1271,218 @@ const KEPT_LANES: [[u8; LANES]; 1 << LANES] = {
         while q < LANES {
             if mask & (1 << q) != 0 {
                 table[mask][at] = q as u8;
+                at += 1;
+            }
+            q += 1;
+        }
+        mask += 1;
+    }
+    table
+};
+
+/// How one level of a descent ([`expand`]) tests a sphere's children: four at a time in the
+/// baseline's vectors, or eight where the processor has AVX2 ([`Avx2`], chosen at run time). Each
+/// lane does the same arithmetic in the same order in both, so both keep the same children in the
+/// same order, with the same count of tests.
+trait Kernel: Copy {
+    /// One level of a descent, as [`expand`] describes it.
+    fn expand(
+        self,
+        tree: &SphereTree,
+        frame: &PairFrame,
+        descend_a: bool,
+        at_leaves: bool,
+        list: &[[u16; 2]],
+        out: &mut [[u16; 2]],
+    ) -> (usize, u64);
+}
+
+/// Children four at a time ([`expand`]), on any processor.
+#[derive(Clone, Copy)]
+struct Baseline;
+
+impl Kernel for Baseline {
+    #[inline(always)]
+    fn expand(
+        self,
+        tree: &SphereTree,
+        frame: &PairFrame,
+        descend_a: bool,
+        at_leaves: bool,
+        list: &[[u16; 2]],
+        out: &mut [[u16; 2]],
+    ) -> (usize, u64) {
+        expand(tree, frame, descend_a, at_leaves, list, out)
+    }
+}
+
+/// Children eight at a time, in 256-bit vectors: a sphere's eight children take one test of
+/// eight lanes instead of two of four, and the kept children are packed by one permutation
+/// and stored in one go. Used only where the processor has AVX2 ([`V3::try_new`]).
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct Avx2(V3);
+
+#[cfg(target_arch = "x86_64")]
+impl Kernel for Avx2 {
+    #[inline(always)]
+    fn expand(
+        self,
+        tree: &SphereTree,
+        frame: &PairFrame,
+        descend_a: bool,
+        at_leaves: bool,
+        list: &[[u16; 2]],
+        out: &mut [[u16; 2]],
+    ) -> (usize, u64) {
+        use std::arch::x86_64::__m256i;
+        let simd = self.0;
+        let (avx, avx2) = (simd.avx, simd.avx2);
+        let lane_index = avx._mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+        let mut end = 0;
+        let mut tests = 0u64;
+        let mut fixed_b = (NONE, Vec4::ZERO);
+        for &[sa, sb] in list {
+            let kids = tree.kids(if descend_a { sa } else { sb } as usize);
+            tests += u64::from(kids.count);
+            let fixed = if descend_a {
+                if fixed_b.0 != sb {
+                    let b = tree.sphere(sb as usize);
+                    let c = frame.map(b);
+                    fixed_b = (sb, Vec4::new(c.x, c.y, c.z, b.w));
+                }
+                fixed_b.1
+            } else {
+                tree.sphere(sa as usize)
+            };
+            let (fx, fy, fz, fr) = (
+                avx._mm256_set1_ps(fixed.x),
+                avx._mm256_set1_ps(fixed.y),
+                avx._mm256_set1_ps(fixed.z),
+                avx._mm256_set1_ps(fixed.w),
+            );
+            let (x, y, z, r) = (
+                eight(&kids.x),
+                eight(&kids.y),
+                eight(&kids.z),
+                eight(&kids.r),
+            );
+            // Each entry is the `[u16; 2]` pair as one u32 (A's sphere in the low half): the
+            // children are `first + lane`, in A's half or in B's.
+            let (mask, entries) = if descend_a {
+                let mask = overlap8(
+                    simd,
+                    avx._mm256_sub_ps(x, fx),
+                    avx._mm256_sub_ps(y, fy),
+                    avx._mm256_sub_ps(z, fz),
+                    avx._mm256_add_ps(r, fr),
+                );
+                let first = avx._mm256_set1_epi32((kids.first | u32::from(sb) << 16) as i32);
+                (mask, avx2._mm256_add_epi32(first, lane_index))
+            } else {
+                let [bx, by, bz] = map8(simd, frame, x, y, z);
+                let mask = overlap8(
+                    simd,
+                    avx._mm256_sub_ps(fx, bx),
+                    avx._mm256_sub_ps(fy, by),
+                    avx._mm256_sub_ps(fz, bz),
+                    avx._mm256_add_ps(fr, r),
+                );
+                let first = avx._mm256_set1_epi32((u32::from(sa) | kids.first << 16) as i32);
+                let kid = avx2._mm256_slli_epi32::<16>(lane_index);
+                (mask, avx2._mm256_add_epi32(first, kid))
+            };
+            let order: __m256i = pulp::cast(KEPT_EIGHT[mask]);
+            let packed: [[u16; 2]; 8] =
+                pulp::cast(avx2._mm256_permutevar8x32_epi32(entries, order));
+            let slots: &mut [[u16; 2]; 8] = match out.get_mut(end..end + 8) {
+                Some(s) => s.try_into().unwrap_or_else(|_| unreachable!()),
+                None => unreachable!("expand: `out` holds 8 slots per entry"),
+            };
+            *slots = packed;
+            end += mask.count_ones() as usize;
+            if at_leaves && end > 0 {
+                break;
+            }
+        }
+        (end, tests)
+    }
+}
+
+// The eight-lane arithmetic of [`Avx2`], as functions rather than closures: a closure is
+// compiled without the processor's features of the function it is written in, and its
+// intrinsics, unless it is inlined, become calls.
+
+/// Four vectors of a sphere's children as one of eight lanes.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn eight(v: &[Vec4; 2]) -> std::arch::x86_64::__m256 {
+    pulp::cast([v[0].to_array(), v[1].to_array()])
+}
+
+/// Which of eight sphere pairs overlap (bit q for lane q): [`overlap_mask`]'s arithmetic, in
+/// the same order, in each lane.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn overlap8(
+    simd: V3,
+    dx: std::arch::x86_64::__m256,
+    dy: std::arch::x86_64::__m256,
+    dz: std::arch::x86_64::__m256,
+    r: std::arch::x86_64::__m256,
+) -> usize {
+    use std::arch::x86_64::_CMP_LE_OQ;
+    let avx = simd.avx;
+    let d2 = avx._mm256_add_ps(
+        avx._mm256_add_ps(avx._mm256_mul_ps(dx, dx), avx._mm256_mul_ps(dy, dy)),
+        avx._mm256_mul_ps(dz, dz),
+    );
+    let le = avx._mm256_cmp_ps::<_CMP_LE_OQ>(d2, avx._mm256_mul_ps(r, r));
+    avx._mm256_movemask_ps(le) as usize & 0xff
+}
+
+/// Centres of eight B-spheres in A's frame: [`PairFrame::map_lanes`]'s arithmetic, in the
+/// same order, in each lane.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn map8(
+    simd: V3,
+    frame: &PairFrame,
+    x: std::arch::x86_64::__m256,
+    y: std::arch::x86_64::__m256,
+    z: std::arch::x86_64::__m256,
+) -> [std::arch::x86_64::__m256; 3] {
+    let avx = simd.avx;
+    let (m, t) = (&frame.m, frame.t);
+    let mut rows = [avx._mm256_setzero_ps(); 3];
+    for (c, row) in rows.iter_mut().enumerate() {
+        let (mx, my) = (
+            avx._mm256_set1_ps(m.x_axis[c]),
+            avx._mm256_set1_ps(m.y_axis[c]),
+        );
+        let (mz, tc) = (avx._mm256_set1_ps(m.z_axis[c]), avx._mm256_set1_ps(t[c]));
+        *row = avx._mm256_add_ps(
+            avx._mm256_add_ps(
+                avx._mm256_add_ps(avx._mm256_mul_ps(mx, x), avx._mm256_mul_ps(my, y)),
+                avx._mm256_mul_ps(mz, z),
+            ),
+            tc,
+        );
+    }
+    rows
+}
+
+/// For each 8-bit overlap mask, its set lanes in increasing order, then zeros: the permutation
+/// that packs the kept children of [`Avx2`]'s test to the front.
+#[cfg(target_arch = "x86_64")]
+const KEPT_EIGHT: [[u32; 8]; 256] = {
+    let mut table = [[0u32; 8]; 256];
+    let mut mask = 0;
+    while mask < 256 {
+        let (mut q, mut at) = (0, 0);
+        while q < 8 {
+            if mask & (1 << q) != 0 {
+                table[mask][at] = q as u32;
                 at += 1;
             }
             q += 1;
@@ -1492,6 +1793,62 @@ mod tests {
                 fused.colliding().is_none(),
                 "threads {threads}: after renumber"
             );
+        }
+    }
+
+    /// Eight-lane and four-lane tests keep the same children in the same order: an exact frame
+    /// in one go and pairs stepped a level at a time, interleaved, end in the same states, the
+    /// same lists and the same count of tests, over frames of motion and on two trees.
+    #[test]
+    fn four_and_eight_lane_kernels_agree_pair_for_pair() {
+        let key = |np: &NarrowPhase| -> Vec<_> {
+            np.pairs
+                .iter()
+                .map(|p| (p.a, p.b, p.status, p.levels, p.resolved_level, p.last))
+                .collect()
+        };
+        for depth in [3, 5] {
+            let (tree, mut world, pairs) = paper_pairs(2_000, 7, depth);
+            let kernels = || {
+                let mut four = NarrowPhase::default();
+                four.four_lanes_only = true;
+                [NarrowPhase::default(), four]
+            };
+            let [mut eight, mut four] = kernels();
+            let [mut eight_stepped, mut four_stepped] = kernels();
+            let mut hits = 0;
+            for frame in 0..3 {
+                eight.resolve_frame(&pairs, &tree, &world, 2);
+                four.resolve_frame(&pairs, &tree, &world, 2);
+                assert_eq!(key(&eight), key(&four), "depth {depth}, frame {frame}");
+                assert_eq!(eight.tests, four.tests, "depth {depth}, frame {frame}");
+                assert_eq!(eight.witness, four.witness, "depth {depth}, frame {frame}");
+                hits += eight.colliding().map_or(0, Iterator::count);
+                // One level of every open pair per round, rounds until all are resolved.
+                for np in [&mut eight_stepped, &mut four_stepped] {
+                    np.reset(&pairs);
+                    while (0..pairs.len()).any(|i| np.pairs[i].status.is_open()) {
+                        for i in 0..pairs.len() {
+                            if np.pairs[i].status.is_open() {
+                                np.step(i, &tree, &world);
+                            }
+                        }
+                    }
+                    np.remember_witnesses(world.len());
+                }
+                assert_eq!(
+                    key(&eight_stepped),
+                    key(&four_stepped),
+                    "stepped, frame {frame}"
+                );
+                assert_eq!(
+                    eight_stepped.tests, four_stepped.tests,
+                    "stepped, frame {frame}"
+                );
+                assert_eq!(key(&eight_stepped), key(&eight), "stepped, frame {frame}");
+                world.integrate(0.01);
+            }
+            assert!(hits > 0, "depth {depth}: no colliding pair to compare");
         }
     }
 

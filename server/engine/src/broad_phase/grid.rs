@@ -968,16 +968,13 @@ impl Rounds for Avx512 {
 
     #[inline(always)]
     fn round(self, s: SortedRef, k: usize, b1: usize, p: Probe, out: &mut [(u32, u32)]) -> usize {
-        use std::arch::x86_64::{__m256i, __m512d, _CMP_LE_OQ};
+        use std::arch::x86_64::__m256i;
         let f = self.0.avx512f;
         let live = ((1u32 << (b1 - k).min(8)) - 1) as u8;
         // Each axis narrows the mask of slots still overlapping (NaN compares false).
-        let axis = |v: &[f64], c: f64, mask: u8| {
-            let v: __m512d = pulp::cast(<[f64; 8]>::try_from(&v[k..k + 8]).unwrap_or([0.0; 8]));
-            let d = f._mm512_abs_pd(f._mm512_sub_pd(v, f._mm512_set1_pd(c)));
-            f._mm512_mask_cmp_pd_mask::<_CMP_LE_OQ>(mask, d, f._mm512_set1_pd(p.reach))
-        };
-        let hits = axis(s.z, p.at[2], axis(s.y, p.at[1], axis(s.x, p.at[0], live)));
+        let hits = narrow8(self.0, &s.x[k..], p.at[0], p.reach, live);
+        let hits = narrow8(self.0, &s.y[k..], p.at[1], p.reach, hits);
+        let hits = narrow8(self.0, &s.z[k..], p.at[2], p.reach, hits);
         let q: __m256i = pulp::cast(<[u32; 8]>::try_from(&s.id[k..k + 8]).unwrap_or([0; 8]));
         let own = self.0.avx._mm256_set1_epi32(p.id as i32);
         let (lo, hi) = (
@@ -994,6 +991,20 @@ impl Rounds for Avx512 {
         }
         hits.count_ones() as usize
     }
+}
+
+/// The slots of `mask` among the first eight of `v` within `reach` of `c` (|v - c| <= reach;
+/// NaN compares false): one axis of an [`Avx512`] round. A function, not a closure: a closure is
+/// compiled without the processor's features of the function it is written in, and its
+/// intrinsics, unless it is inlined, become calls.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn narrow8(simd: V4, v: &[f64], c: f64, reach: f64, mask: u8) -> u8 {
+    use std::arch::x86_64::{__m512d, _CMP_LE_OQ};
+    let f = simd.avx512f;
+    let v: __m512d = pulp::cast(<[f64; 8]>::try_from(&v[..8]).unwrap_or([0.0; 8]));
+    let d = f._mm512_abs_pd(f._mm512_sub_pd(v, f._mm512_set1_pd(c)));
+    f._mm512_mask_cmp_pd_mask::<_CMP_LE_OQ>(mask, d, f._mm512_set1_pd(reach))
 }
 
 /// The cells of region `r` ([x0, x1), [y0, y1), [z0, z1)), regions numbered x fastest, then y,
