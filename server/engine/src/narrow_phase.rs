@@ -1205,17 +1205,7 @@ fn expand(
     for &[sa, sb] in list {
         let kids = tree.kids(if descend_a { sa } else { sb } as usize);
         tests += u64::from(kids.count);
-        // The fixed sphere of this entry: B's mapped into A's frame, or A's.
-        let fixed = if descend_a {
-            if fixed_b.0 != sb {
-                let b = tree.sphere(sb as usize);
-                let c = frame.map(b);
-                fixed_b = (sb, Vec4::new(c.x, c.y, c.z, b.w));
-            }
-            fixed_b.1
-        } else {
-            tree.sphere(sa as usize)
-        };
+        let fixed = fixed_sphere(tree, frame, descend_a, [sa, sb], &mut fixed_b);
         let (fx, fy, fz, fr) = (
             Vec4::splat(fixed.x),
             Vec4::splat(fixed.y),
@@ -1259,6 +1249,29 @@ fn expand(
         }
     }
     (end, tests)
+}
+
+/// The sphere an entry `[sa, sb]`'s children are tested against: B's, mapped into A's frame
+/// (and kept in `mapped_b` until the entry's B sphere changes), while A descends; A's while B
+/// does.
+#[inline(always)]
+fn fixed_sphere(
+    tree: &SphereTree,
+    frame: &PairFrame,
+    descend_a: bool,
+    [sa, sb]: [u16; 2],
+    mapped_b: &mut (u16, Vec4),
+) -> Vec4 {
+    if descend_a {
+        if mapped_b.0 != sb {
+            let b = tree.sphere(sb as usize);
+            let c = frame.map(b);
+            *mapped_b = (sb, Vec4::new(c.x, c.y, c.z, b.w));
+        }
+        mapped_b.1
+    } else {
+        tree.sphere(sa as usize)
+    }
 }
 
 /// For each 4-bit overlap mask, its set lanes in increasing order, then zeros (slots past the
@@ -1345,16 +1358,7 @@ impl Kernel for Avx2 {
         for &[sa, sb] in list {
             let kids = tree.kids(if descend_a { sa } else { sb } as usize);
             tests += u64::from(kids.count);
-            let fixed = if descend_a {
-                if fixed_b.0 != sb {
-                    let b = tree.sphere(sb as usize);
-                    let c = frame.map(b);
-                    fixed_b = (sb, Vec4::new(c.x, c.y, c.z, b.w));
-                }
-                fixed_b.1
-            } else {
-                tree.sphere(sa as usize)
-            };
+            let fixed = fixed_sphere(tree, frame, descend_a, [sa, sb], &mut fixed_b);
             let (fx, fy, fz, fr) = (
                 avx._mm256_set1_ps(fixed.x),
                 avx._mm256_set1_ps(fixed.y),
