@@ -970,12 +970,21 @@ impl Rounds for Avx512 {
     fn round(self, s: SortedRef, k: usize, b1: usize, p: Probe, out: &mut [(u32, u32)]) -> usize {
         use std::arch::x86_64::__m256i;
         let f = self.0.avx512f;
-        let live = ((1u32 << (b1 - k).min(8)) - 1) as u8;
+        // The round's slots, each array cut to exactly eight (the arrays share one length, so
+        // one check covers them; the slots exist, see `PAD`).
+        let end = k + 8;
+        let (x, y, z, id) = (&s.x[k..end], &s.y[k..end], &s.z[k..end], &s.id[k..end]);
+        // Slots before the window's end: one vector comparison of slot numbers.
+        let slots = f._mm512_add_epi64(
+            f._mm512_set1_epi64(k as i64),
+            f._mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0),
+        );
+        let live = f._mm512_cmplt_epu64_mask(slots, f._mm512_set1_epi64(b1 as i64));
         // Each axis narrows the mask of slots still overlapping (NaN compares false).
-        let hits = narrow8(self.0, &s.x[k..], p.at[0], p.reach, live);
-        let hits = narrow8(self.0, &s.y[k..], p.at[1], p.reach, hits);
-        let hits = narrow8(self.0, &s.z[k..], p.at[2], p.reach, hits);
-        let q: __m256i = pulp::cast(<[u32; 8]>::try_from(&s.id[k..k + 8]).unwrap_or([0; 8]));
+        let hits = narrow8(self.0, x, p.at[0], p.reach, live);
+        let hits = narrow8(self.0, y, p.at[1], p.reach, hits);
+        let hits = narrow8(self.0, z, p.at[2], p.reach, hits);
+        let q: __m256i = pulp::cast(<[u32; 8]>::try_from(id).unwrap_or([0; 8]));
         let own = self.0.avx._mm256_set1_epi32(p.id as i32);
         let (lo, hi) = (
             self.0.avx2._mm256_min_epu32(q, own),
@@ -1002,7 +1011,7 @@ impl Rounds for Avx512 {
 fn narrow8(simd: V4, v: &[f64], c: f64, reach: f64, mask: u8) -> u8 {
     use std::arch::x86_64::{__m512d, _CMP_LE_OQ};
     let f = simd.avx512f;
-    let v: __m512d = pulp::cast(<[f64; 8]>::try_from(&v[..8]).unwrap_or([0.0; 8]));
+    let v: __m512d = pulp::cast(<[f64; 8]>::try_from(v).unwrap_or([0.0; 8]));
     let d = f._mm512_abs_pd(f._mm512_sub_pd(v, f._mm512_set1_pd(c)));
     f._mm512_mask_cmp_pd_mask::<_CMP_LE_OQ>(mask, d, f._mm512_set1_pd(reach))
 }
