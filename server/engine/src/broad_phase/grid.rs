@@ -21,7 +21,7 @@
 //!   at the paper's density (the body's own, about half that), so with eight slots a round most
 //!   take one round;
 //! - a round is eight slots where the processor has AVX-512 (chosen at run time): a round's tests
-//!   leave a bit mask and one instruction packs the pairs it keeps, about 45 instructions a round.
+//!   leave a bit mask and one instruction packs the pairs it keeps, about 38 instructions a round.
 //!   On any other x86-64 processor a round is four slots in SSE2, about 75 instructions. Both give
 //!   the same pairs in the same order;
 //! - half-width x cells cut the candidates a body is tested against by about a sixth, compared with
