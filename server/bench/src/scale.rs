@@ -450,6 +450,60 @@ pub fn load_average() -> Option<[f64; 3]> {
     Some([it.next()??, it.next()??, it.next()??])
 }
 
+/// The processor a run measured, printed above its table: the targets are figures of one
+/// machine, and a machine of the same nominal size can be half as fast (a 2-core Intel Xeon at
+/// 2.1 GHz ran the million-body exact step 1.2-1.9x slower than a 2-core AMD EPYC with the same
+/// binary; `docs/BENCHMARKS.md`).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Machine {
+    /// `model name` of `/proc/cpuinfo`'s first processor (`None` where there is none).
+    pub model: Option<String>,
+    /// Processors this process may run on.
+    pub logical: usize,
+    /// Whether the grid's pair search takes its AVX-512 rounds here.
+    pub avx512: bool,
+}
+
+impl Machine {
+    /// This machine.
+    pub fn this() -> Self {
+        Self {
+            model: std::fs::read_to_string("/proc/cpuinfo")
+                .ok()
+                .and_then(|t| cpu_model(&t)),
+            logical: std::thread::available_parallelism().map_or(0, |n| n.get()),
+            #[cfg(target_arch = "x86_64")]
+            avx512: std::arch::is_x86_feature_detected!("avx512f"),
+            #[cfg(not(target_arch = "x86_64"))]
+            avx512: false,
+        }
+    }
+}
+
+impl std::fmt::Display for Machine {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{}, {} logical processors, AVX-512 {}",
+            self.model
+                .as_deref()
+                .unwrap_or("processor model unavailable"),
+            self.logical,
+            if self.avx512 { "yes" } else { "no" }
+        )
+    }
+}
+
+/// The first `model name` of a `/proc/cpuinfo` text, its whitespace collapsed.
+fn cpu_model(cpuinfo: &str) -> Option<String> {
+    cpuinfo.lines().find_map(|l| {
+        let (key, value) = l.split_once(':')?;
+        (key.trim() == "model name")
+            .then(|| value.split_whitespace().collect::<Vec<_>>().join(" "))
+            .filter(|v| !v.is_empty())
+    })
+}
+
 /// Peak resident set of this process (`VmHWM`, KiB), 0 where `/proc/self/status` has none.
 pub fn peak_rss_kib() -> u64 {
     std::fs::read_to_string("/proc/self/status")
@@ -665,6 +719,8 @@ pub struct ScaleOutput {
     pub runs: Vec<RunResult>,
     /// Load averages (1, 5, 15 min) before the first run and after the last.
     pub load_start: Option<[f64; 3]>,
+    /// The processor the runs measured.
+    pub machine: Machine,
     /// See `load_start`.
     pub load_end: Option<[f64; 3]>,
     /// Wall time of the whole command (s).
@@ -901,6 +957,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
              `scale.csv` holds every run with its round.\n"
         );
     }
+    let _ = writeln!(s, "Machine: {}.\n", out.machine);
     let _ = writeln!(
         s,
         "Load average (1/5/15 min): {} at start, {} at end; {} runs in {:.0} s.\n",
@@ -1087,6 +1144,7 @@ pub fn run(cfg: &ScaleConfig, exe: &Path, progress: bool) -> Result<ScaleOutput,
     let started = Instant::now();
     let mut out = ScaleOutput {
         load_start: load_average(),
+        machine: Machine::this(),
         ..ScaleOutput::default()
     };
     let plan = cfg.plan();
@@ -1128,6 +1186,29 @@ pub fn run(cfg: &ScaleConfig, exe: &Path, progress: bool) -> Result<ScaleOutput,
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_processor_model_is_read_from_the_first_processor_of_cpuinfo() {
+        let text = "processor\t: 0\nvendor_id\t: GenuineIntel\nmodel\t\t: 207\n\
+                    model name\t: Intel(R) Xeon(R)   Processor\ncpu MHz\t\t: 2100.000\n\n\
+                    processor\t: 1\nmodel name\t: Other\n";
+        assert_eq!(
+            cpu_model(text).as_deref(),
+            Some("Intel(R) Xeon(R) Processor")
+        );
+        // `model` alone is not the model's name, and an empty name is none.
+        assert_eq!(cpu_model("model\t\t: 207\nmodel name\t:   \n"), None);
+        assert_eq!(cpu_model(""), None);
+        let m = Machine {
+            model: None,
+            logical: 2,
+            avx512: true,
+        };
+        assert_eq!(
+            m.to_string(),
+            "processor model unavailable, 2 logical processors, AVX-512 yes"
+        );
+    }
 
     #[test]
     fn percentiles_are_nearest_rank() {

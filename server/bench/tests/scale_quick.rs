@@ -44,6 +44,10 @@ fn quick_protocol_gives_a_row_per_configuration() {
     );
 
     let md = markdown(&out);
+    // The processor the figures belong to is named above the table.
+    assert!(out.machine.logical >= 1);
+    let machine = format!("Machine: {}.", out.machine);
+    assert!(md.contains(&machine), "{md}");
     let rows = md.lines().filter(|l| l.starts_with("| 2,000 |")).count();
     assert_eq!(rows, 4, "{md}");
     let table = csv(&out.results);
