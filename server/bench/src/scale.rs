@@ -472,10 +472,7 @@ impl Machine {
                 .ok()
                 .and_then(|t| cpu_model(&t)),
             logical: std::thread::available_parallelism().map_or(0, |n| n.get()),
-            #[cfg(target_arch = "x86_64")]
-            avx512: std::arch::is_x86_feature_detected!("avx512f"),
-            #[cfg(not(target_arch = "x86_64"))]
-            avx512: false,
+            avx512: foveal_engine::broad_phase::wide_rounds_available(),
         }
     }
 }
@@ -719,10 +716,10 @@ pub struct ScaleOutput {
     pub runs: Vec<RunResult>,
     /// Load averages (1, 5, 15 min) before the first run and after the last.
     pub load_start: Option<[f64; 3]>,
-    /// The processor the runs measured.
-    pub machine: Machine,
     /// See `load_start`.
     pub load_end: Option<[f64; 3]>,
+    /// The processor the runs measured.
+    pub machine: Machine,
     /// Wall time of the whole command (s).
     pub wall_s: f64,
     /// Files written.

@@ -797,6 +797,14 @@ impl Grid {
     }
 }
 
+/// Whether this processor has what the AVX-512 rounds need ([`V4::try_new`]).
+pub(super) fn wide_rounds_available() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return V4::try_new().is_some();
+    #[cfg(not(target_arch = "x86_64"))]
+    false
+}
+
 /// Read-only view of the sorted cells, shared by the partitions.
 struct Rows<'a> {
     reach: f64,

@@ -28,6 +28,12 @@ use crate::math::Vec3;
 use grid::Grid;
 use sap::SweepAndPrune;
 
+/// Whether the grid's pair search takes its AVX-512 rounds on this processor (the same check
+/// the search makes), so that a report can say which rounds its figures were measured with.
+pub fn wide_rounds_available() -> bool {
+    grid::wide_rounds_available()
+}
+
 /// [`BroadPhaseKind::Auto`] uses the grid from this many bodies on, sweep and prune below.
 ///
 /// Measured with criterion on the paper scene, one thread (`broad_phase` group of
