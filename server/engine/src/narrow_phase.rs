@@ -35,6 +35,15 @@ const RUNS_PER_THREAD: usize = 16;
 const MIN_RUN: usize = 1024;
 const MAX_RUN: usize = 4096;
 
+/// What [`NarrowPhase::resolve_frame_tallied`] does with each block of pairs it has just
+/// resolved: add what it needs of them to the run's accumulator.
+pub type Tally<'a, T> = &'a (dyn Fn(&[PairState], &mut T) + Sync);
+
+/// Pairs per block handed to a [`Tally`]: 12 KiB of states, well inside the first-level cache,
+/// and enough pairs that the call (and any clock reading the tally makes) costs nothing
+/// measurable per pair.
+pub const TALLY_BLOCK: usize = 512;
+
 /// Arena entries always kept between frames (16 KiB): small scenes never reallocate.
 const ARENA_KEEP: usize = 4096;
 
@@ -463,7 +472,7 @@ impl NarrowPhase {
             }
             return;
         }
-        self.resolve_runs(None, tree, world, threads);
+        self.resolve_runs::<()>(None, tree, world, threads, None);
     }
 
     /// An exact frame in one call: [`Self::reset`] to `candidates`, [`Self::resolve_all`] and
@@ -480,12 +489,31 @@ impl NarrowPhase {
         world: &World,
         threads: usize,
     ) {
+        self.resolve_frame_tallied::<()>(candidates, tree, world, threads, None);
+    }
+
+    /// [`Self::resolve_frame`], handing each block of up to [`TALLY_BLOCK`] pairs to `tally`
+    /// as soon as the block is resolved, with the run's accumulator; returns the accumulators
+    /// in run order (one per run; which thread ran a run does not change what it holds).
+    ///
+    /// Why: a frame's metrics count every pair by status and level and test the pairs near
+    /// the fixation. A separate pass reads every state again (24 bytes a pair, 75 MB at a
+    /// million bodies, about 13 ms on one core) after the narrow phase has evicted them; a
+    /// block just resolved is still in the first-level cache.
+    pub fn resolve_frame_tallied<T: Default + Send>(
+        &mut self,
+        candidates: &[(u32, u32)],
+        tree: &SphereTree,
+        world: &World,
+        threads: usize,
+        tally: Option<Tally<'_, T>>,
+    ) -> Vec<T> {
         let n = candidates.len();
         // Every slot below `n` is written by its run before it is read; only growth is filled.
         self.pairs.truncate(n);
         self.pairs.resize(n, PairState::new(0, 0));
         self.start_frame();
-        let runs = self.resolve_runs(Some(candidates), tree, world, threads);
+        let (runs, tallies) = self.resolve_runs(Some(candidates), tree, world, threads, tally);
         self.hit_runs = runs;
         // The witnesses in pair order, as `remember_witnesses` writes them.
         self.witness.clear();
@@ -497,19 +525,22 @@ impl NarrowPhase {
                 leaves: p.last,
             };
         }
+        tallies
     }
 
     /// Resolve every open pair of a frame in which no pair is active, in runs handed to
     /// whichever of up to `threads` threads is free, each pair in one go; with `fresh`, each
     /// run first writes its pairs' states from those candidates (index-parallel to the pairs).
-    /// Lists each run's colliding pairs in `run_hits`; returns the number of runs.
-    fn resolve_runs(
+    /// Lists each run's colliding pairs in `run_hits`; returns the number of runs and, with a
+    /// `tally`, each run's accumulator (see [`Self::resolve_frame_tallied`]).
+    fn resolve_runs<T: Default + Send>(
         &mut self,
         fresh: Option<&[(u32, u32)]>,
         tree: &SphereTree,
         world: &World,
         threads: usize,
-    ) -> usize {
+        tally: Option<Tally<'_, T>>,
+    ) -> (usize, Vec<T>) {
         let n = self.pairs.len();
         // From here on pairs keep no frame: [`Self::evidence`] computes it again.
         self.frames_live = false;
@@ -537,19 +568,22 @@ impl NarrowPhase {
             Some(c) => Box::new(c.chunks(size)),
             None => Box::new(std::iter::repeat(&[][..])),
         };
-        type Run<'a> = (
+        type Run<'a, T> = (
             usize,
             &'a mut [PairState],
             &'a [(u32, u32)],
             &'a mut Vec<u32>,
+            T,
         );
-        let runs: Vec<Mutex<Run<'_>>> = self
+        let runs: Vec<Mutex<Run<'_, T>>> = self
             .pairs
             .chunks_mut(size)
             .zip(candidates)
             .zip(self.run_hits.iter_mut())
             .enumerate()
-            .map(|(k, ((pairs, cands), hits))| Mutex::new((k * size, pairs, cands, hits)))
+            .map(|(k, ((pairs, cands), hits))| {
+                Mutex::new((k * size, pairs, cands, hits, T::default()))
+            })
             .collect();
         let next = AtomicUsize::new(0);
         // Each thread returns its sphere tests, counted on its own stack: a shared total written
@@ -561,7 +595,7 @@ impl NarrowPhase {
                 let mut guard = run
                     .lock()
                     .unwrap_or_else(std::sync::PoisonError::into_inner);
-                let (base, pairs, cands, hits) = &mut *guard;
+                let (base, pairs, cands, hits, acc) = &mut *guard;
                 let base = *base;
                 hits.clear();
                 let mut slot = [PairFrame::IDENTITY];
@@ -575,7 +609,14 @@ impl NarrowPhase {
                     witness,
                     tests: &mut count,
                 };
-                lane.resolve_run(cands, base, hits, tree, world);
+                lane.resolve_run(
+                    cands,
+                    base,
+                    hits,
+                    tree,
+                    world,
+                    tally.map(|f| (f, &mut *acc)),
+                );
             }
             count
         };
@@ -596,10 +637,20 @@ impl NarrowPhase {
                 mine[0] = work(&mut first_arena, &mut self.scratch);
             });
         }
-        drop(runs);
+        let tallies = match tally {
+            Some(_) => runs
+                .into_iter()
+                .map(|run| {
+                    run.into_inner()
+                        .unwrap_or_else(std::sync::PoisonError::into_inner)
+                        .4
+                })
+                .collect(),
+            None => Vec::new(),
+        };
         self.arena = first_arena;
         self.tests += counts.iter().sum::<u64>();
-        run_count
+        (run_count, tallies)
     }
 
     /// Storage for `parts - 1` helper threads' lanes. Only grown: a frame below
@@ -959,13 +1010,14 @@ impl Lane<'_> {
     /// `cands` where it has one (index-parallel), listing the colliding pairs (numbered from
     /// `base`) in `hits`: a run of [`NarrowPhase::resolve_runs`], the processor asked once for
     /// its widest [`Kernel`].
-    fn resolve_run(
+    fn resolve_run<T>(
         &mut self,
         cands: &[(u32, u32)],
         base: usize,
         hits: &mut Vec<u32>,
         tree: &SphereTree,
         world: &World,
+        mut tally: Option<(Tally<'_, T>, &mut T)>,
     ) {
         #[cfg(target_arch = "x86_64")]
         if self.wide
@@ -973,14 +1025,15 @@ impl Lane<'_> {
         {
             return simd.vectorize(
                 #[inline(always)]
-                || self.resolve_run_in(Avx2(simd), cands, base, hits, tree, world),
+                || self.resolve_run_in(Avx2(simd), cands, base, hits, tree, world, &mut tally),
             );
         }
-        self.resolve_run_in(Baseline, cands, base, hits, tree, world)
+        self.resolve_run_in(Baseline, cands, base, hits, tree, world, &mut tally)
     }
 
     #[inline(always)]
-    fn resolve_run_in<K: Kernel>(
+    #[allow(clippy::too_many_arguments)]
+    fn resolve_run_in<K: Kernel, T>(
         &mut self,
         kernel: K,
         cands: &[(u32, u32)],
@@ -988,18 +1041,26 @@ impl Lane<'_> {
         hits: &mut Vec<u32>,
         tree: &SphereTree,
         world: &World,
+        tally: &mut Option<(Tally<'_, T>, &mut T)>,
     ) {
-        for i in 0..self.pairs.len() {
-            if let Some(&(a, b)) = cands.get(i) {
-                self.pairs[i] = PairState::new(a, b);
+        let n = self.pairs.len();
+        for start in (0..n).step_by(TALLY_BLOCK) {
+            let end = (start + TALLY_BLOCK).min(n);
+            for i in start..end {
+                if let Some(&(a, b)) = cands.get(i) {
+                    self.pairs[i] = PairState::new(a, b);
+                }
+                if self.pairs[i].status.is_open() {
+                    self.resolve_pair_in(kernel, i, tree, world);
+                    // Resolved pairs keep no list: one pair's descent at a time.
+                    self.arena.clear();
+                }
+                if self.pairs[i].status == PairStatus::Colliding {
+                    hits.push((base + i) as u32);
+                }
             }
-            if self.pairs[i].status.is_open() {
-                self.resolve_pair_in(kernel, i, tree, world);
-                // Resolved pairs keep no list: one pair's descent at a time.
-                self.arena.clear();
-            }
-            if self.pairs[i].status == PairStatus::Colliding {
-                hits.push((base + i) as u32);
+            if let Some((f, acc)) = tally {
+                f(&self.pairs[start..end], acc);
             }
         }
     }

@@ -237,8 +237,7 @@ impl Shedder {
         crate::metrics::Effort {
             sample_limit: sample.clamp(MIN_SAMPLE, crate::metrics::EXACT_LIMIT),
             fovea_pairs,
-            foveal_known: None,
-            foveal_marked: false,
+            ..crate::metrics::Effort::default()
         }
     }
 
