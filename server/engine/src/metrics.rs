@@ -25,10 +25,16 @@ use crate::world::World;
 /// Most deemed pairs whose evidence is summed exactly; beyond, a sample of about this many. A
 /// pair's P costs two visual angles (about 150 ns), so this bounds the sum at a few milliseconds.
 pub const EXACT_LIMIT: u32 = 25_000;
-/// Pairs per run of the chunked sums: at N = 10,000 (28,000 pairs) four runs, so that the pass
-/// is split over two threads (0.10 -> 0.08 ms a frame). Changing it changes the rounding of the
-/// sums of Δ and P over more pairs than this, never the counts.
+/// Pairs per run of the chunked sums. Changing it changes the rounding of the sums of Δ and P
+/// over more pairs than this, never the counts.
 pub const CHUNK: usize = 8_192;
+
+/// Fewest pairs whose metrics are shared out among threads. At N = 10,000 (28,000 pairs, four
+/// runs) the split once paid (0.10 -> 0.08 ms a frame); on a 2-core Intel Xeon under a 4 ms
+/// budget the pass took 171 us a frame on two threads against 145 us on one (medians of
+/// three alternating runs' p50 over 600 frames): waking the second thread cost more than its half of
+/// the work. The answers do not depend on the thread count either way.
+pub const PARALLEL_MIN_PAIRS: usize = 65_536;
 
 /// What the metrics pass found.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -107,6 +113,24 @@ impl<'a> Fovea<'a> {
         let f = self.fixation_ray;
         let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
         (dot > 0.0) & (dot * dot >= self.cos * self.cos * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]))
+    }
+
+    /// [`Self::contains_point`] for eight points given by their coordinates: the same operations
+    /// in the same order, lane by lane, so the same answers.
+    #[inline(always)]
+    fn contains_points8(&self, x: [f64; 8], y: [f64; 8], z: [f64; 8]) -> [bool; 8] {
+        let e = self.viewer.eye;
+        let f = self.fixation_ray;
+        let mut out = [false; 8];
+        for j in 0..8 {
+            let r = [x[j] - e.x, y[j] - e.y, z[j] - e.z];
+            let depth = (-r[2]).max(1e-9 * (1.0 + r[0].abs() + r[1].abs()));
+            let u = [self.k * r[0], -self.k * r[1], depth];
+            let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
+            out[j] = (dot > 0.0)
+                & (dot * dot >= self.cos * self.cos * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+        }
+        out
     }
 
     /// Whether some point within `radius` of world point `p` may be seen within the threshold:
@@ -242,6 +266,9 @@ pub struct Effort {
     /// the frame's narrow phase as it resolved them ([`NarrowPhase::resolve_frame_tallied`]):
     /// the pass over the pairs is not made again.
     pub counted: Option<Counts>,
+    /// Fewest pairs whose passes are shared out among the threads ([`PARALLEL_MIN_PAIRS`];
+    /// tests lower it to check that the answers do not depend on the thread count).
+    pub parallel_min_pairs: usize,
 }
 
 impl Default for Effort {
@@ -252,6 +279,7 @@ impl Default for Effort {
             foveal_known: None,
             foveal_marked: false,
             counted: None,
+            parallel_min_pairs: PARALLEL_MIN_PAIRS,
         }
     }
 }
@@ -304,6 +332,11 @@ pub fn measure_within(
 ) -> Metrics {
     let pairs = &np.pairs[..];
     let n = pairs.len();
+    let threads = if n < effort.parallel_min_pairs {
+        1
+    } else {
+        threads
+    };
     let runs: Vec<(usize, usize)> = (0..n.div_ceil(CHUNK).max(1))
         .map(|k| (k * CHUNK, ((k + 1) * CHUNK).min(n)))
         .collect();
@@ -514,6 +547,27 @@ impl Counts {
         near: &[bool],
         position: &[Vec3],
     ) {
+        let mut count = {
+            #[inline(always)]
+            || self.count_near_in(pairs, fovea, near, position)
+        };
+        #[cfg(target_arch = "x86_64")]
+        if let Some(simd) = pulp::x86::V3::try_new() {
+            return simd.vectorize(count);
+        }
+        count()
+    }
+
+    /// [`Self::count_near`], compiled for whatever vector width the caller enables: the near
+    /// pairs' centres are tested eight at a time.
+    #[inline(always)]
+    fn count_near_in(
+        &mut self,
+        pairs: &[PairState],
+        fovea: &Fovea<'_>,
+        near: &[bool],
+        position: &[Vec3],
+    ) {
         let mut hist = [[0u32; BINS]; 4];
         let mut near_at = [0u16; NEAR_BLOCK];
         for block in pairs.chunks(NEAR_BLOCK) {
@@ -523,12 +577,25 @@ impl Counts {
                 near_at[k] = j as u16;
                 k += usize::from(near[p.a as usize]);
             }
-            for &j in &near_at[..k] {
-                let p = &block[j as usize];
-                let mid = (position[p.a as usize] + position[p.b as usize]) * 0.5;
-                let inside = fovea.contains_point(mid);
+            let mut add = |p: &PairState, inside: bool| {
                 self.foveal += u32::from(inside);
                 self.foveal_deemed += u32::from(inside & (p.status == PairStatus::Deemed));
+            };
+            let mut eights = near_at[..k].chunks_exact(8);
+            for js in &mut eights {
+                let ps: [&PairState; 8] = std::array::from_fn(|l| &block[js[l] as usize]);
+                let mid = |l: usize| position[ps[l].a as usize] + position[ps[l].b as usize];
+                let mids: [Vec3; 8] = std::array::from_fn(|l| mid(l) * 0.5);
+                let inside =
+                    fovea.contains_points8(mids.map(|m| m.x), mids.map(|m| m.y), mids.map(|m| m.z));
+                for (p, i) in ps.into_iter().zip(inside) {
+                    add(p, i);
+                }
+            }
+            for &j in eights.remainder() {
+                let p = &block[j as usize];
+                let mid = (position[p.a as usize] + position[p.b as usize]) * 0.5;
+                add(p, fovea.contains_point(mid));
             }
         }
         self.add_hist(&hist);
@@ -703,6 +770,21 @@ mod tests {
         (world, tree, viewer, np)
     }
 
+    /// [`measure`] with its passes shared out among `threads` threads however few the pairs.
+    fn measure_split(
+        np: &NarrowPhase,
+        tree: &SphereTree,
+        world: &World,
+        fovea: &Fovea<'_>,
+        threads: usize,
+    ) -> Metrics {
+        let effort = Effort {
+            parallel_min_pairs: 0,
+            ..Effort::default()
+        };
+        measure_within(np, tree, world, None, Some(fovea), threads, effort, None)
+    }
+
     /// The default model's view with the fixation at (`x`, `y`) of the screen.
     fn view_at(viewer: &Viewer, x: f64, y: f64) -> FrameView<'_> {
         FrameView {
@@ -725,6 +807,7 @@ mod tests {
         let n = np.pairs.len() as u32;
         let limit = Effort {
             sample_limit: n / 10,
+            parallel_min_pairs: 0,
             ..Effort::default()
         };
         let on = |threads| {
@@ -794,6 +877,7 @@ mod tests {
             let effort = Effort {
                 sample_limit: limit,
                 fovea_pairs: prefix,
+                parallel_min_pairs: 0,
                 ..Effort::default()
             };
             let on = |threads, clock: Option<&dyn Clock>| {
@@ -933,7 +1017,7 @@ mod tests {
             .count() as u32;
         assert!(np.pairs.len() > CHUNK && deemed > 10, "{deemed}");
         for threads in [1, 2] {
-            let m = measure(&np, &tree, &world, None, Some(&fovea), threads);
+            let m = measure_split(&np, &tree, &world, &fovea, threads);
             assert_eq!((m.foveal, m.foveal_deemed), (brute, deemed));
         }
         // The last run's last block is a partial one: a fovea on the last pair has pairs there.
@@ -950,7 +1034,7 @@ mod tests {
             inside.filter(|p| p.status == PairStatus::Deemed).count() as u32,
         );
         for threads in [1, 2] {
-            let m = measure(&np, &tree, &world, None, Some(&at_last), threads);
+            let m = measure_split(&np, &tree, &world, &at_last, threads);
             assert_eq!((m.foveal, m.foveal_deemed), want, "{threads} threads");
         }
         // And with fewer pairs than a quarter of the bodies, filtered pair by pair.
@@ -997,6 +1081,7 @@ mod tests {
             sample_limit: 1_000,
             fovea_pairs: prefix,
             foveal_marked: marked,
+            parallel_min_pairs: 0,
             ..Effort::default()
         };
         // (foveal, foveal deemed) as the metrics count them.
@@ -1106,7 +1191,7 @@ mod tests {
     }
 
     /// The filter over a slice, eight bodies at a time in vectors, answers exactly as the test
-    /// of each body alone: for bodies anywhere (in the scene, behind and beside the eye, far
+    /// of each body alone, and so does the centre test of eight points: for bodies anywhere (in the scene, behind and beside the eye, far
     /// from the origin, not finite) and slices of any length.
     #[test]
     fn the_ball_filter_over_many_bodies_answers_as_each_alone() {
@@ -1148,6 +1233,17 @@ mod tests {
                     assert_eq!(*o, fovea.may_contain_ball(*p, radius), "{p:?} r {radius}");
                     kept += usize::from(*o);
                     total += 1;
+                }
+                // The centre test eight at a time, likewise.
+                for p8 in ps.chunks_exact(8) {
+                    let inside = fovea.contains_points8(
+                        std::array::from_fn(|j| p8[j].x),
+                        std::array::from_fn(|j| p8[j].y),
+                        std::array::from_fn(|j| p8[j].z),
+                    );
+                    for (p, i) in p8.iter().zip(inside) {
+                        assert_eq!(i, fovea.contains_point(*p), "{p:?}");
+                    }
                 }
             }
         }
