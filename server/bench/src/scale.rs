@@ -456,7 +456,8 @@ pub fn load_average() -> Option<[f64; 3]> {
 /// binary; `docs/BENCHMARKS.md`).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Machine {
-    /// `model name` of `/proc/cpuinfo`'s first processor (`None` where there is none).
+    /// `model name` of `/proc/cpuinfo`'s first processor, with its family and model numbers
+    /// (`None` where there is no name).
     pub model: Option<String>,
     /// Processors this process may run on.
     pub logical: usize,
@@ -491,13 +492,25 @@ impl std::fmt::Display for Machine {
     }
 }
 
-/// The first `model name` of a `/proc/cpuinfo` text, its whitespace collapsed.
+/// The first processor's `model name` of a `/proc/cpuinfo` text, its whitespace collapsed, with
+/// its `cpu family` and `model` numbers where the text gives them: a virtual machine's name can
+/// be the same for different processors (two 2-core Intel Xeons of different generations both
+/// read "Intel(R) Xeon(R) Processor", and ran the same binary at different speeds).
 fn cpu_model(cpuinfo: &str) -> Option<String> {
-    cpuinfo.lines().find_map(|l| {
-        let (key, value) = l.split_once(':')?;
-        (key.trim() == "model name")
-            .then(|| value.split_whitespace().collect::<Vec<_>>().join(" "))
-            .filter(|v| !v.is_empty())
+    // The first processor's block ends at the first blank line.
+    let first = cpuinfo.split("\n\n").next().unwrap_or("");
+    let field = |name: &str| {
+        first.lines().find_map(|l| {
+            let (key, value) = l.split_once(':')?;
+            (key.trim() == name)
+                .then(|| value.split_whitespace().collect::<Vec<_>>().join(" "))
+                .filter(|v| !v.is_empty())
+        })
+    };
+    let name = field("model name")?;
+    Some(match (field("cpu family"), field("model")) {
+        (Some(family), Some(model)) => format!("{name} (family {family}, model {model})"),
+        _ => name,
     })
 }
 
@@ -1186,13 +1199,18 @@ mod tests {
 
     #[test]
     fn the_processor_model_is_read_from_the_first_processor_of_cpuinfo() {
-        let text = "processor\t: 0\nvendor_id\t: GenuineIntel\nmodel\t\t: 207\n\
-                    model name\t: Intel(R) Xeon(R)   Processor\ncpu MHz\t\t: 2100.000\n\n\
-                    processor\t: 1\nmodel name\t: Other\n";
+        let text = "processor\t: 0\nvendor_id\t: GenuineIntel\ncpu family\t: 6\n\
+                    model\t\t: 207\nmodel name\t: Intel(R) Xeon(R)   Processor\n\
+                    cpu MHz\t\t: 2100.000\n\n\
+                    processor\t: 1\ncpu family\t: 7\nmodel\t\t: 1\nmodel name\t: Other\n";
         assert_eq!(
             cpu_model(text).as_deref(),
-            Some("Intel(R) Xeon(R) Processor")
+            Some("Intel(R) Xeon(R) Processor (family 6, model 207)")
         );
+        // Without the numbers, the name alone; not the next processor's numbers.
+        let named = "processor\t: 0\nmodel name\t: Some CPU\n\nprocessor\t: 1\n\
+                     cpu family\t: 7\nmodel\t\t: 1\n";
+        assert_eq!(cpu_model(named).as_deref(), Some("Some CPU"));
         // `model` alone is not the model's name, and an empty name is none.
         assert_eq!(cpu_model("model\t\t: 207\nmodel name\t:   \n"), None);
         assert_eq!(cpu_model(""), None);
