@@ -107,9 +107,17 @@ impl<'a> Fovea<'a> {
     /// `contains_px(viewer.project(p))`, without the projection; thresholds up to 89 degrees).
     #[inline]
     pub fn contains_point(&self, p: Vec3) -> bool {
-        let r = p - self.viewer.eye;
-        let depth = (-r.z).max(1e-9 * (1.0 + r.x.abs() + r.y.abs()));
-        let u = [self.k * r.x, -self.k * r.y, depth];
+        self.contains_xyz(p.x, p.y, p.z)
+    }
+
+    /// [`Self::contains_point`] on the point's coordinates: one lane of
+    /// [`Self::contains_points8`].
+    #[inline(always)]
+    fn contains_xyz(&self, x: f64, y: f64, z: f64) -> bool {
+        let e = self.viewer.eye;
+        let r = [x - e.x, y - e.y, z - e.z];
+        let depth = (-r[2]).max(1e-9 * (1.0 + r[0].abs() + r[1].abs()));
+        let u = [self.k * r[0], -self.k * r[1], depth];
         let f = self.fixation_ray;
         let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
         (dot > 0.0) & (dot * dot >= self.cos * self.cos * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]))
@@ -119,16 +127,9 @@ impl<'a> Fovea<'a> {
     /// in the same order, lane by lane, so the same answers.
     #[inline(always)]
     fn contains_points8(&self, x: [f64; 8], y: [f64; 8], z: [f64; 8]) -> [bool; 8] {
-        let e = self.viewer.eye;
-        let f = self.fixation_ray;
         let mut out = [false; 8];
-        for j in 0..8 {
-            let r = [x[j] - e.x, y[j] - e.y, z[j] - e.z];
-            let depth = (-r[2]).max(1e-9 * (1.0 + r[0].abs() + r[1].abs()));
-            let u = [self.k * r[0], -self.k * r[1], depth];
-            let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
-            out[j] = (dot > 0.0)
-                & (dot * dot >= self.cos * self.cos * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+        for (j, o) in out.iter_mut().enumerate() {
+            *o = self.contains_xyz(x[j], y[j], z[j]);
         }
         out
     }
@@ -190,9 +191,17 @@ impl<'a> Fovea<'a> {
     /// root and no branch.
     #[inline(always)]
     fn may_contain_grown(&self, p: Vec3, grow: f64) -> bool {
-        let r = p - self.viewer.eye;
-        let depth = -r.z;
-        let u = [self.k * r.x, -self.k * r.y, depth];
+        self.may_contain_grown_xyz(p.x, p.y, p.z, grow)
+    }
+
+    /// [`Self::may_contain_grown`] on the point's coordinates: one lane of
+    /// [`Self::may_contain_grown8`].
+    #[inline(always)]
+    fn may_contain_grown_xyz(&self, x: f64, y: f64, z: f64, grow: f64) -> bool {
+        let e = self.viewer.eye;
+        let r = [x - e.x, y - e.y, z - e.z];
+        let depth = -r[2];
+        let u = [self.k * r[0], -self.k * r[1], depth];
         let f = self.fixation_ray;
         let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
         let c = [
@@ -211,23 +220,9 @@ impl<'a> Fovea<'a> {
     /// operations in the same order, lane by lane, so the same answers.
     #[inline(always)]
     fn may_contain_grown8(&self, x: [f64; 8], y: [f64; 8], z: [f64; 8], grow: f64) -> [bool; 8] {
-        let e = self.viewer.eye;
-        let f = self.fixation_ray;
-        let cos_sq = self.cos * self.cos;
         let mut out = [false; 8];
-        for j in 0..8 {
-            let r = [x[j] - e.x, y[j] - e.y, z[j] - e.z];
-            let depth = -r[2];
-            let u = [self.k * r[0], -self.k * r[1], depth];
-            let dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
-            let c = [
-                u[1] * f[2] - u[2] * f[1],
-                u[2] * f[0] - u[0] * f[2],
-                u[0] * f[1] - u[1] * f[0],
-            ];
-            let cross_sq = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-            let rhs = grow * (1.0 + 1e-9) + 1e-9 * depth + dot * self.sin;
-            out[j] = (depth <= grow) | ((rhs >= 0.0) & (cross_sq * cos_sq <= rhs * rhs));
+        for (j, o) in out.iter_mut().enumerate() {
+            *o = self.may_contain_grown_xyz(x[j], y[j], z[j], grow);
         }
         out
     }
@@ -770,6 +765,16 @@ mod tests {
         (world, tree, viewer, np)
     }
 
+    /// The default camera and display over a cube of side 20 at the origin.
+    fn viewer_of_a_20_unit_cube() -> Viewer {
+        Viewer::new(
+            &CameraConfig::default(),
+            &Display::default(),
+            Vec3::ZERO,
+            20.0,
+        )
+    }
+
     /// [`measure`] with its passes shared out among `threads` threads however few the pairs.
     fn measure_split(
         np: &NarrowPhase,
@@ -1151,12 +1156,7 @@ mod tests {
 
     #[test]
     fn the_projection_free_fovea_test_agrees_with_the_visual_angle() {
-        let viewer = Viewer::new(
-            &CameraConfig::default(),
-            &Display::default(),
-            Vec3::ZERO,
-            20.0,
-        );
+        let viewer = viewer_of_a_20_unit_cube();
         let mut rng = crate::rng::Rng::new(7);
         let (mut inside, mut checked) = (0, 0);
         for (fx, fy, deg) in [
@@ -1191,16 +1191,12 @@ mod tests {
     }
 
     /// The filter over a slice, eight bodies at a time in vectors, answers exactly as the test
-    /// of each body alone, and so does the centre test of eight points: for bodies anywhere (in the scene, behind and beside the eye, far
-    /// from the origin, not finite) and slices of any length.
+    /// of each body alone, and so does the centre test of eight points: for bodies anywhere (in
+    /// the scene, behind and beside the eye, far from the origin, not finite) and slices of any
+    /// length.
     #[test]
     fn the_ball_filter_over_many_bodies_answers_as_each_alone() {
-        let viewer = Viewer::new(
-            &CameraConfig::default(),
-            &Display::default(),
-            Vec3::ZERO,
-            20.0,
-        );
+        let viewer = viewer_of_a_20_unit_cube();
         let mut rng = crate::rng::Rng::new(23);
         let specials = [
             viewer.eye,
