@@ -641,26 +641,20 @@ impl Collider {
     ) {
         self.priorities.clear();
         let threads = self.config.threads as usize;
-        let pos = &input.world.position;
-        // The metrics' fovea (see `measure_view`): about the fixation itself.
-        let fixation_px = fixation.map(|f| {
-            let f = f.clamped();
-            input.viewer.to_pixels(f.x, f.y)
-        });
+        // The metrics' fovea: about the fixation itself.
+        let fixation_px = self.measure_view(input, fixation).map(|v| v.fixation_px);
         let fovea = fixation_px.map(|px| Fovea::new(input.viewer, px, FOVEAL_DEG));
-        let reach = metrics::centre_reach(input.tree);
-        let near = fovea
-            .as_ref()
-            .filter(|_| metrics::uses_near_bodies(input.candidates.len(), pos.len()))
-            .map(|f| metrics::near_bodies(f, pos, reach, threads));
+        let count = metrics::FrameCount::new(
+            fovea,
+            input.candidates.len(),
+            input.tree,
+            input.world,
+            threads,
+        );
         let t_near = clock.now_ns();
         let tally = |pairs: &[PairState], acc: &mut (metrics::Counts, u64)| {
             let t = clock.now_ns();
-            match (&fovea, &near) {
-                (Some(f), Some(near)) => acc.0.count_near(pairs, f, near, pos),
-                (Some(f), None) => acc.0.count_filtered(pairs, f, pos, reach),
-                (None, _) => acc.0.count_all(pairs),
-            }
+            count.count(pairs, &mut acc.0);
             acc.1 += clock.now_ns().saturating_sub(t);
         };
         let runs = self.narrow.resolve_frame_tallied(
@@ -678,11 +672,7 @@ impl Collider {
             tally_ns += ns;
         }
         self.counted = Some((fixation_px, counts));
-        let workers = if input.candidates.len() < crate::narrow_phase::PARALLEL_MIN_PAIRS {
-            1
-        } else {
-            threads.clamp(1, 64) as u64
-        };
+        let workers = crate::narrow_phase::threads_for(input.candidates.len(), threads) as u64;
         let tally_wall = (tally_ns / workers).min(t_end.saturating_sub(t_near));
         self.scheduler.forget();
         profile.prioritise_ns = 0;

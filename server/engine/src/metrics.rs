@@ -336,10 +336,6 @@ pub fn measure_within(
         .map(|k| (k * CHUNK, ((k + 1) * CHUNK).min(n)))
         .collect();
     let centre_reach = centre_reach(tree);
-    // When every pair is tested and there are pairs enough, the filter is run once per body, in
-    // body order and without a branch, and a pair reads one byte of its first body instead of
-    // its position (a cache miss in random order); with fewer pairs than a quarter of the
-    // bodies, per pair: a pass over a million bodies for a few pairs cost a shed frame 7 ms.
     // A fovea already counted is not tested again.
     let fovea = fovea.filter(|_| effort.foveal_known.is_none());
     let marks = if effort.foveal_marked {
@@ -354,50 +350,42 @@ pub fn measure_within(
         _ => None,
     };
     let fovea_end = effort.fovea_pairs.min(n);
-    // Nor where the foveal pass marked what it tested: the marks cover most of the pairs.
-    let near: Option<Vec<bool>> = fovea
-        .filter(|_| effort.counted.is_none())
-        .filter(|_| fovea_end == n && uses_near_bodies(n, world.len()) && marks.is_empty())
-        .map(|f| near_bodies(f, &world.position, centre_reach, threads));
+    // Every pair tested, none of them marked by a foveal pass (the marks cover most of the
+    // pairs where there are any), and not counted already: a whole frame's count.
+    let whole = (fovea_end == n && marks.is_empty() && effort.counted.is_none())
+        .then(|| FrameCount::new(fovea.copied(), n, tree, world, threads));
     let count = |lo: usize, hi: usize| -> Counts {
         let mut c = Counts::default();
+        if let Some(whole) = &whole {
+            whole.count(&pairs[lo..hi], &mut c);
+            return c;
+        }
+        c.count_all(&pairs[lo..hi]);
         let pos = &world.position;
         let mid = |p: &PairState| (pos[p.a as usize] + pos[p.b as usize]) * 0.5;
-        let f = fovea.filter(|_| lo < fovea_end);
-        match (f, &near) {
-            (Some(f), Some(near)) => c.count_near(&pairs[lo..hi], f, near, pos),
-            (Some(f), None) if fovea_end == n && marks.is_empty() => {
-                // Every pair of a frame with few pairs for its bodies: the filter per pair.
-                c.count_filtered(&pairs[lo..hi], f, pos, centre_reach)
-            }
-            _ => {
-                c.add_hist(&histogram_and(&pairs[lo..hi], |_| {}));
-                if let Some(f) = f {
-                    let tested = &pairs[lo..hi.min(fovea_end)];
-                    if fovea_end < n {
-                        // A shed frame's prefix: the pairs of the regions that may hold foveal
-                        // pairs, about half of them foveal. Every centre the foveal pass did
-                        // not test is tested, without a branch on the outcome (the marked ones
-                        // lie in long runs: the pass stops near the end of each of its runs,
-                        // if at all).
-                        for (k, p) in tested.iter().enumerate() {
-                            let inside = marked(lo + k).unwrap_or_else(|| f.contains_point(mid(p)));
-                            c.foveal += u32::from(inside);
-                            c.foveal_deemed += u32::from(inside & (p.status == PairStatus::Deemed));
-                        }
-                    } else {
-                        // Every pair, some marked by the foveal pass: the filter per pair where
-                        // the pass did not test it.
-                        for (k, p) in tested.iter().enumerate() {
-                            let inside = marked(lo + k).unwrap_or_else(|| {
-                                f.may_contain_ball(pos[p.a as usize], centre_reach)
-                                    && f.contains_point(mid(p))
-                            });
-                            if inside {
-                                c.foveal += 1;
-                                c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
-                            }
-                        }
+        if let Some(f) = fovea.filter(|_| lo < fovea_end) {
+            let tested = &pairs[lo..hi.min(fovea_end)];
+            if fovea_end < n {
+                // A shed frame's prefix: the pairs of the regions that may hold foveal pairs,
+                // about half of them foveal. Every centre the foveal pass did not test is
+                // tested, without a branch on the outcome (the marked ones lie in long runs: the
+                // pass stops near the end of each of its runs, if at all).
+                for (k, p) in tested.iter().enumerate() {
+                    let inside = marked(lo + k).unwrap_or_else(|| f.contains_point(mid(p)));
+                    c.foveal += u32::from(inside);
+                    c.foveal_deemed += u32::from(inside & (p.status == PairStatus::Deemed));
+                }
+            } else {
+                // Every pair, some marked by the foveal pass: the filter per pair where the
+                // pass did not test it.
+                for (k, p) in tested.iter().enumerate() {
+                    let inside = marked(lo + k).unwrap_or_else(|| {
+                        f.may_contain_ball(pos[p.a as usize], centre_reach)
+                            && f.contains_point(mid(p))
+                    });
+                    if inside {
+                        c.foveal += 1;
+                        c.foveal_deemed += u32::from(p.status == PairStatus::Deemed);
                     }
                 }
             }
@@ -413,7 +401,7 @@ pub fn measure_within(
         }
     }
     // Freed before the sum starts: the sum's timing is the sum's.
-    drop(near);
+    drop(whole);
     let mut m = counts.metrics();
     if let Some(known) = effort.foveal_known {
         m.foveal = known;
@@ -535,7 +523,7 @@ impl Counts {
     /// the histogram pass notes the pairs whose first body is near without a branch, and only
     /// those are tested (also without a branch), while the block is in cache: a branch on the
     /// near flag per pair cost more than the tests it saved.
-    pub fn count_near(
+    fn count_near(
         &mut self,
         pairs: &[PairState],
         fovea: &Fovea<'_>,
@@ -600,7 +588,7 @@ impl Counts {
     /// against the fovea grown by `reach` ([`centre_reach`]), where the pair is. For frames with
     /// fewer pairs than [`uses_near_bodies`] asks: a pass over a million bodies for a few pairs
     /// cost a shed frame 7 ms.
-    pub fn count_filtered(
+    fn count_filtered(
         &mut self,
         pairs: &[PairState],
         fovea: &Fovea<'_>,
@@ -621,7 +609,7 @@ impl Counts {
     }
 
     /// Count `pairs` by status and level alone (no fixation).
-    pub fn count_all(&mut self, pairs: &[PairState]) {
+    fn count_all(&mut self, pairs: &[PairState]) {
         self.add_hist(&histogram_and(pairs, |_| {}));
     }
 
@@ -699,8 +687,54 @@ fn in_runs<T: Send>(
 /// How far a candidate pair's centre can be from its first body: candidate boxes overlap
 /// (half-size h = the root radius), so the centres differ by less than 2h on each axis and the
 /// pair's centre is within sqrt(3) h of either body. The reach of [`near_bodies`]'s filter.
-pub fn centre_reach(tree: &SphereTree) -> f64 {
+pub(crate) fn centre_reach(tree: &SphereTree) -> f64 {
     3f64.sqrt() * tree.root_radius()
+}
+
+/// A count of every pair of a frame ([`Counts`]), the fovea's pairs included: with the bodies'
+/// filter ([`near_bodies`], one pass over the bodies, in body order and without a branch, so a
+/// pair reads one byte of its first body instead of its position) where there are pairs enough
+/// ([`uses_near_bodies`]), else pair by pair ([`Counts::count_filtered`]). The metrics' pass
+/// counts with it, and so does an exact frame's narrow phase as it resolves its pairs.
+#[derive(Debug)]
+pub struct FrameCount<'a> {
+    fovea: Option<Fovea<'a>>,
+    near: Option<Vec<bool>>,
+    position: &'a [Vec3],
+    reach: f64,
+}
+
+impl<'a> FrameCount<'a> {
+    /// A count of `pairs` candidate pairs of `world`'s bodies, with the foveal pairs of `fovea`
+    /// (the bodies' filter, where it is used, runs here on up to `threads` threads).
+    pub fn new(
+        fovea: Option<Fovea<'a>>,
+        pairs: usize,
+        tree: &SphereTree,
+        world: &'a World,
+        threads: usize,
+    ) -> Self {
+        let (position, reach) = (&world.position[..], centre_reach(tree));
+        let near = fovea
+            .as_ref()
+            .filter(|_| uses_near_bodies(pairs, position.len()))
+            .map(|f| near_bodies(f, position, reach, threads));
+        Self {
+            fovea,
+            near,
+            position,
+            reach,
+        }
+    }
+
+    /// Add `pairs` (some of the frame's) to `c`.
+    pub fn count(&self, pairs: &[PairState], c: &mut Counts) {
+        match (&self.fovea, &self.near) {
+            (Some(f), Some(near)) => c.count_near(pairs, f, near, self.position),
+            (Some(f), None) => c.count_filtered(pairs, f, self.position, self.reach),
+            (None, _) => c.count_all(pairs),
+        }
+    }
 }
 
 /// Whether a count over `pairs` candidate pairs of `bodies` bodies filters by body, with one
@@ -716,7 +750,12 @@ const NEAR_PER_THREAD: usize = 4_096;
 
 /// Per body: whether a pair it finds may have its centre in the fovea (see
 /// [`Fovea::may_contain_ball`]), on up to `threads` threads.
-pub fn near_bodies(f: &Fovea<'_>, position: &[Vec3], reach: f64, threads: usize) -> Vec<bool> {
+pub(crate) fn near_bodies(
+    f: &Fovea<'_>,
+    position: &[Vec3],
+    reach: f64,
+    threads: usize,
+) -> Vec<bool> {
     let mut near = vec![false; position.len()];
     let fill = |out: &mut [bool], ps: &[Vec3]| f.may_contain_balls(ps, reach, out);
     let workers = threads.min(position.len() / NEAR_PER_THREAD).max(1);

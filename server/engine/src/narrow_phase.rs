@@ -35,6 +35,16 @@ const RUNS_PER_THREAD: usize = 16;
 const MIN_RUN: usize = 1024;
 const MAX_RUN: usize = 4096;
 
+/// Threads [`NarrowPhase::resolve_frame`] shares `pairs` pairs among when offered `threads`:
+/// one below [`PARALLEL_MIN_PAIRS`], else all of them (at most 64).
+pub fn threads_for(pairs: usize, threads: usize) -> usize {
+    if pairs < PARALLEL_MIN_PAIRS {
+        1
+    } else {
+        threads.clamp(1, 64)
+    }
+}
+
 /// What [`NarrowPhase::resolve_frame_tallied`] does with each block of pairs it has just
 /// resolved: add what it needs of them to the run's accumulator.
 pub type Tally<'a, T> = &'a (dyn Fn(&[PairState], &mut T) + Sync);
@@ -544,11 +554,7 @@ impl NarrowPhase {
         let n = self.pairs.len();
         // From here on pairs keep no frame: [`Self::evidence`] computes it again.
         self.frames_live = false;
-        let parts = if n < PARALLEL_MIN_PAIRS {
-            1
-        } else {
-            threads.clamp(1, 64)
-        };
+        let parts = threads_for(n, threads);
         // Runs of pairs are handed out one at a time to whichever thread is free: pairs differ
         // in cost by two orders of magnitude (one root test against a descent of hundreds), so
         // fixed halves left one thread idle while the other finished its denser half.
