@@ -1291,13 +1291,8 @@ mod tests {
         ] {
             let g = Grid::new(half, lo, side, 4_000);
             let dims = g.dims;
-            let mut state = 0x9e37_79b9_7f4a_7c15u64;
-            let mut unit = move || {
-                state ^= state << 13;
-                state ^= state >> 7;
-                state ^= state << 17;
-                (state >> 11) as f64 / (1u64 << 53) as f64
-            };
+            let mut rng = crate::rng::Rng::new(7);
+            let mut unit = || rng.next_f64();
             // Random centres from a side's width outside the volume to one beyond it.
             let mut points: Vec<Vec3> = (0..4_000)
                 .map(|_| lo + (Vec3::new(unit(), unit(), unit()) * 3.0 - 1.0) * side)
