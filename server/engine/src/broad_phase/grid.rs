@@ -10,9 +10,11 @@
 //! through memory and their repair is dominated by cache misses. Here every pass is a forward scan
 //! over flat arrays:
 //! - the sort is a radix sort in two levels: bodies are read in id order (their cells computed
-//!   four at a time where the processor has AVX2) and dealt into a few hundred contiguous
-//!   *buckets* of cells at most (sized by the last frame's counts, so in one pass), then each
-//!   bucket, small enough to stay in cache, is counting-sorted by cell;
+//!   four at a time where the processor has AVX2) and their ids and cells dealt into a few
+//!   hundred contiguous *buckets* of cells at most (sized by the last frame's counts, so in one
+//!   pass), then each bucket, small enough to stay in cache, is counting-sorted by cell, and its
+//!   bodies' centres copied into place from the positions, read nearly in order as the bodies
+//!   are renumbered in the cell order at large N;
 //! - the y-rows of a z-plane are taken in pairs, and a pair's cells are numbered x-cell by x-cell,
 //!   the two rows' cells of an x-cell side by side; so the x-cells `ix - 2 ..= ix + 2` of a pair
 //!   of rows are one contiguous slice. A body's candidates are four such slices (see
@@ -20,7 +22,9 @@
 //!   at a time in vector registers (the sorted bodies are kept one array a coordinate for this)
 //!   and without a branch on the (unpredictable) overlap outcome. A slice holds about 4.4 bodies
 //!   at the paper's density (the body's own, about half that), so with eight slots a round most
-//!   take one round;
+//!   take one round; where the processor has AVX-512, the body's own pair and the pair above
+//!   (empty in the lower row) share one round when they fit in it together, so most bodies take
+//!   three rounds, not four;
 //! - a round is eight slots where the processor has AVX-512 (chosen at run time): a round's tests
 //!   leave a bit mask and one instruction packs the pairs it keeps, about 38 instructions a round.
 //!   On any other x86-64 processor a round is four slots in SSE2, about 75 instructions. Both give
@@ -28,8 +32,8 @@
 //! - half-width x cells cut the candidates a body is tested against by about a sixth, compared with
 //!   cubic cells, for one more entry per cell in the cell index.
 //!
-//! Memory is fixed by N: about 66 bytes per body (the body in 32 bytes twice: dealt into its
-//! bucket, with a sixteenth of room to spare, and sorted, one array a field), 4 bytes per cell
+//! Memory is fixed by N: about 41 bytes per body (its id and cell dealt into its bucket, with a
+//! sixteenth of room to spare, 8 bytes; the body sorted, one array a field, 32), 4 bytes per cell
 //! (about 2.2 cells per body at the paper's density, at most 4 plus a constant), and the pair
 //! buffer, which shrinks after a pathological frame (see [`super::SHRINK_AFTER_FRAMES`]).
 //!
@@ -97,12 +101,11 @@ const PAD: usize = 8;
 /// microseconds, about the grid's time for this many bodies.
 const MIN_BODIES_PER_THREAD: usize = 20_000;
 
-/// One body dealt into its bucket: its centre, id and cell (32 bytes, two to a cache line).
+/// One body dealt into its bucket: its id and cell (8 bytes). Not its centre: the second level
+/// reads that from the positions once the bucket is sorted, which writes and reads 24 bytes
+/// less of a body that has left the cache between the two levels.
 #[derive(Debug, Clone, Copy, Default)]
 struct Slot {
-    x: f64,
-    y: f64,
-    z: f64,
     id: u32,
     cell: u32,
 }
@@ -335,27 +338,23 @@ impl Dealer {
     ) {
         let (quads, rest) = chunk.as_chunks::<4>();
         for (q, quad) in quads.iter().enumerate() {
-            let c = cells.cells(&self.dims, quad);
-            for j in 0..4 {
-                self.put(4 * q + j, quad[j], c[j], out, counts);
+            for (j, cell) in cells.cells(&self.dims, quad).into_iter().enumerate() {
+                self.put(4 * q + j, cell, out, counts);
             }
         }
         let done = 4 * quads.len();
         for (k, &p) in rest.iter().enumerate() {
-            self.put(done + k, p, self.dims.cell_of(p), out, counts);
+            self.put(done + k, self.dims.cell_of(p), out, counts);
         }
     }
 
     #[inline(always)]
-    fn put(self, k: usize, p: Vec3, cell: u32, out: &mut [&mut [Slot]], counts: &mut [u32]) {
+    fn put(self, k: usize, cell: u32, out: &mut [&mut [Slot]], counts: &mut [u32]) {
         let b = (cell >> self.shift) as usize;
         let dealt = counts[b];
         // Past a segment's room the body is only counted: the caller deals again.
         if let Some(slot) = out[b].get_mut(dealt as usize) {
             *slot = Slot {
-                x: p.x,
-                y: p.y,
-                z: p.z,
                 id: (self.first + k) as u32,
                 cell,
             };
@@ -747,27 +746,29 @@ impl Grid {
                     index[c0 - c_base + k] = at;
                     (at, *c) = (at + *c, at);
                 }
-                // Five destination arrays: touching them in order first, as paid for a single
-                // array of slots, no longer measured faster than the scatter alone. Each is cut
-                // to the bucket's slots, all five to one length, so that a body's five stores
-                // share one bounds check.
+                // Ids and cells are scattered into the bucket's slots (cut to one length, so
+                // that a body's two stores share one bounds check), then the centres are read
+                // in slot order: written in order, and read nearly in order, as the bodies are
+                // renumbered in the cell order at large N.
                 let (lo, hi) = (at0 as usize - s_base, at as usize - s_base);
-                let x = &mut dest.x[lo..hi];
-                let m = x.len();
-                let (y, z) = (&mut dest.y[lo..hi][..m], &mut dest.z[lo..hi][..m]);
-                let (id, cell) = (&mut dest.id[lo..hi][..m], &mut dest.cell[lo..hi][..m]);
+                let id = &mut dest.id[lo..hi];
+                let m = id.len();
+                let cell = &mut dest.cell[lo..hi][..m];
                 for segment in segments {
                     for s in segment {
                         let k = s.cell as usize - c0;
                         let j = (count[k] - at0) as usize;
-                        x[j] = s.x;
-                        y[j] = s.y;
-                        z[j] = s.z;
                         id[j] = s.id;
                         cell[j] = s.cell;
                         count[k] += 1;
                     }
                 }
+                let (x, y, z) = (
+                    &mut dest.x[lo..hi][..m],
+                    &mut dest.y[lo..hi][..m],
+                    &mut dest.z[lo..hi][..m],
+                );
+                fill_centres(positions, id, [x, y, z]);
             }
         });
         // The end of the last cell, and the row of empty cells beyond it.
@@ -912,6 +913,38 @@ impl Grid {
     }
 }
 
+/// Slots a centre is asked for ahead of its copy in [`fill_centres`]: about a memory latency's
+/// worth of the copy's pace (24 measured 0.6 ms faster than none at a million bodies; the
+/// processor's own prefetchers follow only the runs of consecutive ids).
+const FILL_AHEAD: usize = 24;
+
+/// Copy each slot's centre from `positions`, by the slot's id, into the coordinate arrays `xyz`
+/// (the last step of [`Grid::sort`]'s second level). The ids follow the cells' order only as
+/// closely as the bodies' numbering does, so the reads are nearly but not quite in order: each
+/// is asked of the memory [`FILL_AHEAD`] slots early, which only hints and never faults.
+#[inline(always)]
+fn fill_centres(positions: &[Vec3], id: &[u32], [x, y, z]: [&mut [f64]; 3]) {
+    let m = id.len();
+    let (x, y, z) = (&mut x[..m], &mut y[..m], &mut z[..m]);
+    #[cfg(target_arch = "x86_64")]
+    if let Some(simd) = pulp::x86::V1::try_new() {
+        use std::arch::x86_64::_MM_HINT_T0;
+        for j in 0..m {
+            if let Some(&ahead) = id.get(j + FILL_AHEAD) {
+                let at = positions.as_ptr().wrapping_add(ahead as usize);
+                simd.sse._mm_prefetch::<_MM_HINT_T0>(at.cast());
+            }
+            let p = positions[id[j] as usize];
+            (x[j], y[j], z[j]) = (p.x, p.y, p.z);
+        }
+        return;
+    }
+    for j in 0..m {
+        let p = positions[id[j] as usize];
+        (x[j], y[j], z[j]) = (p.x, p.y, p.z);
+    }
+}
+
 /// Whether this processor has what the AVX-512 rounds need ([`V4::try_new`]).
 pub(super) fn wide_rounds_available() -> bool {
     #[cfg(target_arch = "x86_64")]
@@ -1039,22 +1072,48 @@ impl Rows<'_> {
             if buf.len() < len + most {
                 buf.resize((2 * buf.len()).max(len + most) + 64, (0, 0));
             }
-            for (b0, b1) in windows {
-                // A window's slots are tested a round at a time, the tests past its end masked;
-                // most windows hold fewer bodies than a round, so most take one round and the
-                // loop's exit is rarely mispredicted.
-                let mut k = b0;
-                loop {
-                    let round = &mut buf[len..len + L::WIDTH];
-                    len += rounds.round(sorted, k, b1, p, round);
-                    k += L::WIDTH;
-                    if k >= b1 {
-                        break;
-                    }
-                }
+            // The output, cut once to what this body may write: the rounds then index a slice
+            // held in registers rather than reloading the vector's length and pointer.
+            let out = &mut buf[..len + most];
+            let [w0, w1, w2, w3] = windows;
+            // The own pair's window and the one above (empty in the lower row) share one round
+            // where they fit in it together, as they mostly do.
+            if (w0.1 - w0.0) + (w1.1 - w1.0) <= L::MERGED {
+                len += rounds.merged(sorted, w0, w1, p, &mut out[len..len + 2 * L::WIDTH]);
+            } else {
+                len = window(rounds, sorted, w0, p, out, len);
+                len = window(rounds, sorted, w1, p, out, len);
             }
+            len = window(rounds, sorted, w2, p, out, len);
+            len = window(rounds, sorted, w3, p, out, len);
         }
         len
+    }
+}
+
+/// The pairs of body `p` with the slots `b0..b1` whose boxes overlap its own, written into `out`
+/// from `len` on; returns the new length. `out` has room for the window's slots and one round
+/// more.
+///
+/// The slots are tested a round at a time, the tests past the window's end masked; most windows
+/// hold fewer bodies than a round, so most take one round and the loop's exit is rarely
+/// mispredicted.
+#[inline(always)]
+fn window<L: Rounds>(
+    rounds: L,
+    sorted: SortedRef,
+    (b0, b1): (usize, usize),
+    p: Probe,
+    out: &mut [(u32, u32)],
+    mut len: usize,
+) -> usize {
+    let mut k = b0;
+    loop {
+        len += rounds.round(sorted, k, b1, p, &mut out[len..len + L::WIDTH]);
+        k += L::WIDTH;
+        if k >= b1 {
+            break len;
+        }
     }
 }
 
@@ -1069,6 +1128,25 @@ trait Rounds: Copy {
     /// in slot order, each as (smaller id, larger id); returns how many. Every slot's pair may be
     /// written, so `out` has [`Self::WIDTH`] slots; the slots exist (padding, [`PAD`]).
     fn round(self, s: SortedRef, k: usize, b1: usize, p: Probe, out: &mut [(u32, u32)]) -> usize;
+
+    /// Two windows together of at most this many slots are tested by [`Self::merged`].
+    const MERGED: usize;
+
+    /// The pairs of windows `a` then `b`, together at most [`Self::MERGED`] slots, as
+    /// [`Self::round`] over `a` and then over `b` would write them; `out` has twice
+    /// [`Self::WIDTH`] slots. As two rounds where the processor cannot merge them.
+    #[inline(always)]
+    fn merged(
+        self,
+        s: SortedRef,
+        a: (usize, usize),
+        b: (usize, usize),
+        p: Probe,
+        out: &mut [(u32, u32)],
+    ) -> usize {
+        let found = self.round(s, a.0, a.1, p, out);
+        found + self.round(s, b.0, b.1, p, &mut out[found..])
+    }
 }
 
 /// The body a window is searched for: its centre, its id, and how far a centre may be on each
@@ -1086,6 +1164,7 @@ struct Baseline;
 
 impl Rounds for Baseline {
     const WIDTH: usize = LANES;
+    const MERGED: usize = LANES;
 
     #[inline(always)]
     fn round(self, s: SortedRef, k: usize, b1: usize, p: Probe, out: &mut [(u32, u32)]) -> usize {
@@ -1107,26 +1186,65 @@ struct Avx512(V4);
 #[cfg(target_arch = "x86_64")]
 impl Rounds for Avx512 {
     const WIDTH: usize = 8;
+    const MERGED: usize = 8;
 
     #[inline(always)]
     fn round(self, s: SortedRef, k: usize, b1: usize, p: Probe, out: &mut [(u32, u32)]) -> usize {
-        use std::arch::x86_64::__m256i;
         let f = self.0.avx512f;
-        // The round's slots, each array cut to exactly eight (the arrays share one length, so
-        // one check covers them; the slots exist, see `PAD`).
-        let end = k + 8;
-        let (x, y, z, id) = (&s.x[k..end], &s.y[k..end], &s.z[k..end], &s.id[k..end]);
         // Slots before the window's end: one vector comparison of slot numbers.
         let slots = f._mm512_add_epi64(
             f._mm512_set1_epi64(k as i64),
             f._mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0),
         );
         let live = f._mm512_cmplt_epu64_mask(slots, f._mm512_set1_epi64(b1 as i64));
-        // Each axis narrows the mask of slots still overlapping (NaN compares false).
-        let hits = narrow8(self.0, x, p.at[0], p.reach, live);
-        let hits = narrow8(self.0, y, p.at[1], p.reach, hits);
-        let hits = narrow8(self.0, z, p.at[2], p.reach, hits);
-        let q: __m256i = pulp::cast(<[u32; 8]>::try_from(id).unwrap_or([0; 8]));
+        let at = [lanes8(s.x, k), lanes8(s.y, k), lanes8(s.z, k)];
+        self.test(at, ids8(s.id, k), live, p, out)
+    }
+
+    /// One round: the second window's slots are expanded into the lanes past the first's.
+    #[inline(always)]
+    fn merged(
+        self,
+        s: SortedRef,
+        (a0, a1): (usize, usize),
+        (b0, b1): (usize, usize),
+        p: Probe,
+        out: &mut [(u32, u32)],
+    ) -> usize {
+        let f = self.0.avx512f;
+        let (la, lb) = (a1 - a0, b1 - b0);
+        // Lanes `la..` take `b`'s slots; lanes `la + lb..` are past both windows' ends.
+        let from_b = (0xff_u32 << la) as u8;
+        let live = ((1_u32 << (la + lb)) - 1) as u8;
+        let at = [
+            f._mm512_mask_expand_pd(lanes8(s.x, a0), from_b, lanes8(s.x, b0)),
+            f._mm512_mask_expand_pd(lanes8(s.y, a0), from_b, lanes8(s.y, b0)),
+            f._mm512_mask_expand_pd(lanes8(s.z, a0), from_b, lanes8(s.z, b0)),
+        ];
+        let q = f._mm256_mask_expand_epi32(ids8(s.id, a0), from_b, ids8(s.id, b0));
+        self.test(at, q, live, p, out)
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Avx512 {
+    /// Write `p`'s pair with each of the eight slots at `at` (x, y, z), ids `q`, of mask `live`
+    /// whose box overlaps its own to `out`, in lane order; returns how many. Each axis narrows
+    /// the mask of slots still overlapping (NaN compares false), and one compress packs the
+    /// pairs kept.
+    #[inline(always)]
+    fn test(
+        self,
+        at: [std::arch::x86_64::__m512d; 3],
+        q: std::arch::x86_64::__m256i,
+        live: u8,
+        p: Probe,
+        out: &mut [(u32, u32)],
+    ) -> usize {
+        let f = self.0.avx512f;
+        let hits = narrow8(self.0, at[0], p.at[0], p.reach, live);
+        let hits = narrow8(self.0, at[1], p.at[1], p.reach, hits);
+        let hits = narrow8(self.0, at[2], p.at[2], p.reach, hits);
         let own = self.0.avx._mm256_set1_epi32(p.id as i32);
         let (lo, hi) = (
             self.0.avx2._mm256_min_epu32(q, own),
@@ -1144,16 +1262,29 @@ impl Rounds for Avx512 {
     }
 }
 
-/// The slots of `mask` among the first eight of `v` within `reach` of `c` (|v - c| <= reach;
-/// NaN compares false): one axis of an [`Avx512`] round. A function, not a closure: a closure is
-/// compiled without the processor's features of the function it is written in, and its
-/// intrinsics, unless it is inlined, become calls.
+/// The eight slots of `v` from `k` on, in one vector (the slots exist, see [`PAD`]).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-fn narrow8(simd: V4, v: &[f64], c: f64, reach: f64, mask: u8) -> u8 {
-    use std::arch::x86_64::{__m512d, _CMP_LE_OQ};
+fn lanes8(v: &[f64], k: usize) -> std::arch::x86_64::__m512d {
+    pulp::cast(<[f64; 8]>::try_from(&v[k..k + 8]).unwrap_or([0.0; 8]))
+}
+
+/// The eight ids from slot `k` on, in one vector.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn ids8(id: &[u32], k: usize) -> std::arch::x86_64::__m256i {
+    pulp::cast(<[u32; 8]>::try_from(&id[k..k + 8]).unwrap_or([0; 8]))
+}
+
+/// The lanes of `mask` among `v` within `reach` of `c` (|v - c| <= reach; NaN compares false):
+/// one axis of an [`Avx512`] round. A function, not a closure: a closure is compiled without the
+/// processor's features of the function it is written in, and its intrinsics, unless it is
+/// inlined, become calls.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn narrow8(simd: V4, v: std::arch::x86_64::__m512d, c: f64, reach: f64, mask: u8) -> u8 {
+    use std::arch::x86_64::_CMP_LE_OQ;
     let f = simd.avx512f;
-    let v: __m512d = pulp::cast(<[f64; 8]>::try_from(v).unwrap_or([0.0; 8]));
     let d = f._mm512_abs_pd(f._mm512_sub_pd(v, f._mm512_set1_pd(c)));
     f._mm512_mask_cmp_pd_mask::<_CMP_LE_OQ>(mask, d, f._mm512_set1_pd(reach))
 }
@@ -1274,6 +1405,54 @@ mod tests {
         assert!(want.iter().all(|&(a, b)| ![3, 7, 11, 12, 19].contains(&a)
             && ![3, 7, 11, 12, 19].contains(&b)));
         assert_eq!(got, want);
+    }
+
+    /// Where the processor has AVX-512, the own pair's window and the pair above's share one
+    /// round when they fit in it together. From sparse scenes, where they always fit, to dense
+    /// ones, where many do not, the pairs are brute force's, in the baseline's order, and each
+    /// slot holds its body's centre.
+    #[test]
+    fn windows_sharing_a_round_give_the_baselines_pairs_in_its_order() {
+        let (side, half) = (4.0, 0.3);
+        let mut rng = crate::rng::Rng::new(11);
+        // Whether some upper-row cell's two windows held at most one round of slots, and
+        // whether some held more.
+        let mut fit = [false; 2];
+        for bodies in [40, 300, 1_000, 2_500] {
+            let positions: Vec<Vec3> = (0..bodies)
+                .map(|_| Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * side)
+                .collect();
+            let mut wide = Grid::new(half, Vec3::ZERO, side, bodies);
+            let mut baseline = wide.clone();
+            baseline.baseline_rounds();
+            wide.update(&positions);
+            baseline.update(&positions);
+            wide.assert_well_formed(&positions);
+            assert_eq!(wide.pairs(), baseline.pairs(), "{bodies} bodies");
+            let mut got = wide.pairs().to_vec();
+            got.sort_unstable();
+            assert_eq!(got, brute_force_pairs(&positions, half), "{bodies} bodies");
+            let d = wide.dims;
+            let slots = |b: usize, ix: usize| {
+                let (lo, hi) = (
+                    2 * ix.saturating_sub(X_SPLIT),
+                    2 * (ix + X_SPLIT + 1).min(d.nx),
+                );
+                (wide.start[b + hi] - wide.start[b + lo]) as usize
+            };
+            for iz in 0..d.n {
+                for pair in 0..d.row_pairs() - 1 {
+                    let own = (iz * d.row_pairs() + pair) * d.pair_cells();
+                    for ix in 0..d.nx {
+                        if wide.start[own + 2 * ix + 1] < wide.start[own + 2 * ix + 2] {
+                            let both = slots(own, ix) + slots(own + d.pair_cells(), ix);
+                            fit[usize::from(both <= 8)] = true;
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(fit, [true, true], "windows that do not fit, and that fit");
     }
 
     /// The first level's four-lane cells are the scalar cells, centre for centre: inside the
