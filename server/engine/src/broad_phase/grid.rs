@@ -26,7 +26,8 @@
 //!   (empty in the lower row) share one round when they fit in it together, so most bodies take
 //!   three rounds, not four;
 //! - a round is eight slots where the processor has AVX-512 (chosen at run time): a round's tests
-//!   leave a bit mask and one instruction packs the pairs it keeps, about 38 instructions a round.
+//!   leave a bit mask and one instruction packs the pairs it keeps, about 38 instructions a round
+//!   (a shared round adds a load and an expand for each of its four arrays).
 //!   On any other x86-64 processor a round is four slots in SSE2, about 75 instructions. Both give
 //!   the same pairs in the same order;
 //! - half-width x cells cut the candidates a body is tested against by about a sixth, compared with
@@ -71,10 +72,10 @@ const MAX_CELLS_PER_BODY: usize = 4;
 /// Cells per bucket of the first sorting level, a power of two at most `2^MAX_BUCKET_SHIFT`, chosen
 /// for at most `TARGET_BUCKETS` buckets: fewer output streams for the first level against smaller
 /// buckets for the second. At N = 1,000,000 that is 275 buckets of about 3,600 bodies, whose
-/// second level works in cache even when the bodies have drifted from the cell order they were
-/// numbered in: in a simulation (bodies renumbered at creation, measured 60-80 frames later) the
-/// sort took 16 ms against 20 ms with 18 buckets, though 18 are 7% faster for bodies in random
-/// order.
+/// second level counts and scatters in cache even when the bodies have drifted from the cell
+/// order they were numbered in: in a simulation (bodies renumbered at creation, measured 60-80
+/// frames later, when the buckets still held the bodies' centres) the sort took 16 ms against
+/// 20 ms with 18 buckets, though 18 were 7% faster for bodies in random order.
 const MAX_BUCKET_SHIFT: u32 = 24;
 const TARGET_BUCKETS: usize = 512;
 
@@ -916,6 +917,7 @@ impl Grid {
 /// Slots a centre is asked for ahead of its copy in [`fill_centres`]: about a memory latency's
 /// worth of the copy's pace (24 measured 0.6 ms faster than none at a million bodies; the
 /// processor's own prefetchers follow only the runs of consecutive ids).
+#[cfg(target_arch = "x86_64")]
 const FILL_AHEAD: usize = 24;
 
 /// Copy each slot's centre from `positions`, by the slot's id, into the coordinate arrays `xyz`
@@ -1410,13 +1412,14 @@ mod tests {
     /// Where the processor has AVX-512, the own pair's window and the pair above's share one
     /// round when they fit in it together. From sparse scenes, where they always fit, to dense
     /// ones, where many do not, the pairs are brute force's, in the baseline's order, and each
-    /// slot holds its body's centre.
+    /// slot holds its body's centre. (Elsewhere both searches take the baseline's rounds, and
+    /// only brute force is compared.)
     #[test]
     fn windows_sharing_a_round_give_the_baselines_pairs_in_its_order() {
         let (side, half) = (4.0, 0.3);
         let mut rng = crate::rng::Rng::new(11);
-        // Whether some upper-row cell's two windows held at most one round of slots, and
-        // whether some held more.
+        // Whether some upper-row body's two windows (its own pair's from the next body on, and
+        // the pair above's) held at most one round of slots, and whether some held more.
         let mut fit = [false; 2];
         for bodies in [40, 300, 1_000, 2_500] {
             let positions: Vec<Vec3> = (0..bodies)
@@ -1444,8 +1447,11 @@ mod tests {
                 for pair in 0..d.row_pairs() - 1 {
                     let own = (iz * d.row_pairs() + pair) * d.pair_cells();
                     for ix in 0..d.nx {
-                        if wide.start[own + 2 * ix + 1] < wide.start[own + 2 * ix + 2] {
-                            let both = slots(own, ix) + slots(own + d.pair_cells(), ix);
+                        let upper = own + 2 * ix + 1;
+                        let hi = 2 * (ix + X_SPLIT + 1).min(d.nx);
+                        for i in wide.start[upper]..wide.start[upper + 1] {
+                            let mine = (wide.start[own + hi] - (i + 1)) as usize;
+                            let both = mine + slots(own + d.pair_cells(), ix);
                             fit[usize::from(both <= 8)] = true;
                         }
                     }
