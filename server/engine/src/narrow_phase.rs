@@ -35,6 +35,13 @@ const RUNS_PER_THREAD: usize = 16;
 const MIN_RUN: usize = 1024;
 const MAX_RUN: usize = 4096;
 
+/// Most bytes of the bodies' state (centres, bases and witnesses) that each thread of a parallel
+/// narrow phase reads through before its runs ([`warm_bodies`]): half the 2 MiB second-level
+/// cache of the machine it was measured on, about 14,000 bodies. Beyond a thread's cache the
+/// stream would only evict itself: at N = 100,000 the exact step on two threads took 16.5-16.8 ms
+/// with a first version of it (centres and bases) against 16.3-16.4 ms without.
+const WARM_MAX_BYTES: usize = 1 << 20;
+
 /// Threads [`NarrowPhase::resolve_frame`] shares `pairs` pairs among when offered `threads`:
 /// one below [`PARALLEL_MIN_PAIRS`], else all of them (at most 64).
 pub fn threads_for(pairs: usize, threads: usize) -> usize {
@@ -265,6 +272,30 @@ pub fn centre_of_collision(ca: Vec3, ra: f64, cb: Vec3, rb: f64) -> Vec3 {
 struct Witness {
     partner: u32,
     leaves: [u16; 2],
+}
+
+/// Read every body's centre, basis and witness in order, so that a thread of a parallel narrow
+/// phase takes them into its cache as one stream before its runs (up to [`WARM_MAX_BYTES`]).
+///
+/// Integration, on the frame's threads, has just written each body's centre and basis on one
+/// of them, and the frame's thread the witnesses; each run reads bodies from all over. Without
+/// this, a thread met the others' lines one miss at a time, inside the pairs' descents: at
+/// N = 10,000 the narrow phase took 21% more processor time on two threads than on one for the
+/// same pairs, and the load of a body's basis 6.84% of its samples against 2.27%. Read in order,
+/// the lines arrive many at a time (about 0.7 MiB at N = 10,000), and the step took 6% less
+/// time. Only a hint: nothing read here is used.
+fn warm_bodies(world: &World, witness: &[Witness]) {
+    let mut bits = 0u64;
+    for p in &world.position {
+        bits ^= p.x.to_bits();
+    }
+    for b in &world.basis {
+        bits ^= u64::from(b.x_axis.x.to_bits());
+    }
+    for w in witness {
+        bits ^= u64::from(w.partner);
+    }
+    std::hint::black_box(bits);
 }
 
 const NO_WITNESS: Witness = Witness {
@@ -594,7 +625,12 @@ impl NarrowPhase {
         let next = AtomicUsize::new(0);
         // Each thread returns its sphere tests, counted on its own stack: a shared total written
         // at every level from both threads would bounce its cache line between the cores.
+        let per_body = size_of::<Vec3>() + size_of::<LMat3>() + size_of::<Witness>();
+        let warm = parts > 1 && world.len() * per_body <= WARM_MAX_BYTES;
         let work = |arena: &mut Vec<[u16; 2]>, scratch: &mut [Vec<[u16; 2]>; 2]| -> u64 {
+            if warm {
+                warm_bodies(world, witness);
+            }
             let mut count = 0u64;
             while let Some(run) = runs.get(next.fetch_add(1, Ordering::Relaxed)) {
                 // Each run is taken by exactly one thread, so the lock is never contended.
