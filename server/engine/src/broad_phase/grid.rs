@@ -694,12 +694,16 @@ impl Grid {
         self.deal_passes = 1;
         if !self.deal(positions, per_part) {
             self.deal_passes = 2;
-            for (room, &count) in self.segment_room.iter_mut().zip(&self.part_counts) {
-                *room = count + count / SEGMENT_SLACK_DIVISOR + SEGMENT_SLACK_MIN;
-            }
+            self.fit_segments();
             let fitted = self.deal(positions, per_part);
             debug_assert!(fitted, "segments fitted to the counts overflowed");
         }
+        // The next frame's segments: fitted to this frame's counts every frame, not only after
+        // an overflow, so that only a jump of more than the slack in one frame overflows one.
+        // Fitted only after overflows, the rooms fell behind the bodies' drift: at a million
+        // bodies on two threads, where each part's ids cover half the volume and a part's
+        // segments in the other half's buckets have little room, 61 of 201 frames dealt twice.
+        self.fit_segments();
         // Bucket b's bodies, in their final order of slots.
         self.bucket_start[0] = 0;
         for b in 0..buckets {
@@ -774,6 +778,14 @@ impl Grid {
         });
         // The end of the last cell, and the row of empty cells beyond it.
         self.start[cells..].fill(self.bodies as u32);
+    }
+
+    /// Room for each part's segment of each bucket: its count in the last deal, a sixteenth
+    /// more, and [`SEGMENT_SLACK_MIN`] more still.
+    fn fit_segments(&mut self) {
+        for (room, &count) in self.segment_room.iter_mut().zip(&self.part_counts) {
+            *room = count + count / SEGMENT_SLACK_DIVISOR + SEGMENT_SLACK_MIN;
+        }
     }
 
     /// Deal every body into its part's segment of its bucket (level 1 of [`Self::sort`]),
@@ -1528,10 +1540,11 @@ mod tests {
         }
     }
 
-    /// The first sorting level deals in one pass while the bodies drift, and in two in a frame
-    /// that moves them across buckets wholesale (a first frame, a clump), after which one pass
-    /// suffices again; its staging never holds more than the
-    /// bodies and their slack, and every frame's pairs are brute force's, on one and two parts.
+    /// The first sorting level deals in one pass while the bodies drift, for as long as they
+    /// drift and whichever parts their ids fall in, and in two in a frame that moves them across
+    /// buckets wholesale (a first frame, a clump), after which one pass suffices again; its
+    /// staging never holds more than the bodies and their slack, and every frame's pairs are
+    /// brute force's, on one and two parts.
     #[test]
     fn the_deal_takes_one_pass_while_bodies_drift_and_two_after_a_jump() {
         let (n, side, half) = (4_000usize, 7.0, 0.222);
@@ -1542,11 +1555,14 @@ mod tests {
             state ^= state << 17;
             (state >> 11) as f64 / (1u64 << 53) as f64
         };
-        let spread: Vec<Vec3> = (0..n)
+        // Numbered by depth, as a simulation renumbers them in cell order: each part's ids
+        // then fill some buckets and leave the others' segments little room.
+        let mut spread: Vec<Vec3> = (0..n)
             .map(|_| Vec3::new(unit(), unit(), unit()) * side)
             .collect();
+        spread.sort_by(|a, b| a.z.total_cmp(&b.z));
         let nudge: Vec<Vec3> = (0..n)
-            .map(|_| (Vec3::new(unit(), unit(), unit()) - 0.5) * 0.02)
+            .map(|_| (Vec3::new(unit(), unit(), unit()) - 0.5) * 0.02 + Vec3::new(0.0, 0.0, 0.02))
             .collect();
         let drifted = |frames: f64| -> Vec<Vec3> {
             spread
@@ -1558,11 +1574,14 @@ mod tests {
         let clump = vec![Vec3::splat(side / 2.0); n];
         // (positions, passes the deal must take): the clump's dispersal fits its segments'
         // slack on some partitions, so its passes are not prescribed.
+        // The bodies also drift in depth together, 1.2 over sixty frames (more than two cells),
+        // carrying each part's bodies into the buckets of the other's ids: the segments must
+        // follow the counts frame by frame, not stay as first fitted.
         let mut script = vec![(drifted(0.0), Some(2))];
-        script.extend((1..6).map(|f| (drifted(f as f64), Some(1))));
+        script.extend((1..60).map(|f| (drifted(f as f64), Some(1))));
         script.push((clump, Some(2)));
-        script.push((drifted(6.0), None));
-        script.extend((7..10).map(|f| (drifted(f as f64), Some(1))));
+        script.push((drifted(60.0), None));
+        script.extend((61..64).map(|f| (drifted(f as f64), Some(1))));
         for parts in [1, 2] {
             let mut g = Grid::new(half, Vec3::ZERO, side, n);
             g.partition_tiny_scenes();
