@@ -941,19 +941,14 @@ fn fill_centres(positions: &[Vec3], id: &[u32], [x, y, z]: [&mut [f64]; 3]) {
     let m = id.len();
     let (x, y, z) = (&mut x[..m], &mut y[..m], &mut z[..m]);
     #[cfg(target_arch = "x86_64")]
-    if let Some(simd) = pulp::x86::V1::try_new() {
-        use std::arch::x86_64::_MM_HINT_T0;
-        for j in 0..m {
-            if let Some(&ahead) = id.get(j + FILL_AHEAD) {
-                let at = positions.as_ptr().wrapping_add(ahead as usize);
-                simd.sse._mm_prefetch::<_MM_HINT_T0>(at.cast());
-            }
-            let p = positions[id[j] as usize];
-            (x[j], y[j], z[j]) = (p.x, p.y, p.z);
-        }
-        return;
-    }
+    let sse = pulp::x86::V1::try_new();
     for j in 0..m {
+        #[cfg(target_arch = "x86_64")]
+        if let (Some(simd), Some(&ahead)) = (sse, id.get(j + FILL_AHEAD)) {
+            let at = positions.as_ptr().wrapping_add(ahead as usize);
+            simd.sse
+                ._mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(at.cast());
+        }
         let p = positions[id[j] as usize];
         (x[j], y[j], z[j]) = (p.x, p.y, p.z);
     }
