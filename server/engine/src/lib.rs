@@ -57,6 +57,7 @@ pub mod math;
 pub mod metrics;
 pub mod narrow_phase;
 pub mod perception;
+pub mod prefetch;
 pub mod report;
 pub mod response;
 pub mod rng;
