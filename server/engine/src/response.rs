@@ -4,17 +4,72 @@
 //! already separating keeps its velocities, so an overlap that persists for a few frames does not
 //! make the bodies swap back and forth (jitter, sticking).
 
+use crate::prefetch::Prefetcher;
 use crate::world::World;
+
+/// Pairs ahead of the one exchanged whose bodies' state is asked of the memory meanwhile.
+///
+/// The pairs come region by region in the order the frame searched them, not in the bodies'
+/// order, so each pair's four reads (two positions, two velocities) were mostly misses of the
+/// processor's caches: at 100,000 bodies with a 16 ms budget (130,000 pairs on the list, most of
+/// them deemed) the response took 3 ms a frame, a fifth of the budget, all of it in the frame's
+/// tail. 8, 16, 32 and 64 ahead measured 0.78, 0.73, 0.71 and 0.71 of the time without.
+const AHEAD: usize = 32;
+
+/// The response phase, with storage for a frame's pairs kept from frame to frame.
+#[derive(Debug, Default)]
+pub struct Response {
+    pairs: Vec<(u32, u32)>,
+}
+
+impl Response {
+    /// Exchange velocities of each approaching pair in `pairs`, in order. Returns how many
+    /// exchanged.
+    ///
+    /// The order matters (a body on two approaching pairs takes the second's exchange after the
+    /// first's) and is kept. The pairs are listed first: a loop over a list can ask for the
+    /// bodies of the pair [`AHEAD`] places on, which took half the time of reading the same
+    /// pairs ahead through the iterator (the list costs a pass over the pairs, which the iterator
+    /// made anyway).
+    pub fn exchange(
+        &mut self,
+        world: &mut World,
+        pairs: impl IntoIterator<Item = (u32, u32)>,
+    ) -> u32 {
+        self.pairs.clear();
+        self.pairs.extend(pairs);
+        let n = exchange_listed(world, &self.pairs);
+        // Storage for one pathological frame's pairs is not kept for good.
+        if self.pairs.capacity() > 4 * self.pairs.len().max(KEEP) {
+            self.pairs.shrink_to(2 * self.pairs.len().max(KEEP));
+        }
+        n
+    }
+}
+
+/// Pairs' worth of storage a [`Response`] keeps however few the last frame had.
+const KEEP: usize = 4096;
 
 /// Exchange velocities of each approaching pair in `pairs`, in order. Returns how many exchanged.
 pub fn exchange_velocities(world: &mut World, pairs: impl IntoIterator<Item = (u32, u32)>) -> u32 {
+    Response::default().exchange(world, pairs)
+}
+
+fn exchange_listed(world: &mut World, pairs: &[(u32, u32)]) -> u32 {
+    let prefetch = Prefetcher::new();
+    let (velocity, position) = (&mut world.velocity, &world.position);
     let mut n = 0;
-    for (a, b) in pairs {
+    for (i, &(a, b)) in pairs.iter().enumerate() {
+        if let Some(&(c, d)) = pairs.get(i + AHEAD) {
+            for body in [c as usize, d as usize] {
+                prefetch.hint(velocity, body);
+                prefetch.hint(position, body);
+            }
+        }
         let (a, b) = (a as usize, b as usize);
-        let approach =
-            (world.velocity[b] - world.velocity[a]).dot(world.position[b] - world.position[a]);
+        let approach = (velocity[b] - velocity[a]).dot(position[b] - position[a]);
         if approach < 0.0 {
-            world.velocity.swap(a, b);
+            velocity.swap(a, b);
             n += 1;
         }
     }
@@ -26,6 +81,38 @@ mod tests {
     use super::*;
     use crate::config::SceneConfig;
     use crate::math::Vec3;
+
+    /// The look-ahead changes what is read early, not the order of the exchanges: over many
+    /// pairs sharing bodies (a body on several approaching pairs takes each exchange in turn),
+    /// the velocities and the count are those of exchanging pair by pair, and a second frame's
+    /// shorter list on the same storage gives its own answer.
+    #[test]
+    fn listed_exchanges_match_exchanging_pair_by_pair() {
+        let mut rng = crate::rng::Rng::new(7);
+        let mut response = Response::default();
+        for (len, seed) in [(5_000, 3), (40, 4)] {
+            let mut w = World::generate(&SceneConfig::paper(500, seed));
+            let pairs: Vec<(u32, u32)> = (0..len)
+                .map(|_| {
+                    let a = (rng.next_f64() * 50.0) as u32;
+                    (a, a + 1 + (rng.next_f64() * 400.0) as u32)
+                })
+                .collect();
+            let mut naive = w.clone();
+            let mut swaps = 0;
+            for &(a, b) in &pairs {
+                let (a, b) = (a as usize, b as usize);
+                let v = &naive.velocity;
+                if (v[b] - v[a]).dot(naive.position[b] - naive.position[a]) < 0.0 {
+                    naive.velocity.swap(a, b);
+                    swaps += 1;
+                }
+            }
+            assert_eq!(response.exchange(&mut w, pairs.iter().copied()), swaps);
+            assert!(swaps > 0 && swaps < len, "{swaps} of {len}");
+            assert_eq!(w.velocity, naive.velocity, "{len} pairs");
+        }
+    }
 
     #[test]
     fn approaching_pairs_swap_and_separating_pairs_do_not() {

@@ -12,7 +12,7 @@ use crate::fixation::Fixation;
 use crate::narrow_phase::{NarrowPhase, PairState};
 use crate::perception::Viewer;
 use crate::report::{FrameReport, PhaseProfile};
-use crate::response::exchange_velocities;
+use crate::response::Response;
 use crate::shape::Star;
 use crate::shedding::Shedder;
 use crate::sphere_tree::SphereTree;
@@ -28,6 +28,7 @@ pub struct Simulation {
     world: World,
     broad: BroadPhase,
     collider: Collider,
+    response: Response,
     viewer: Viewer,
     budget: FrameBudget,
     report: FrameReport,
@@ -134,6 +135,7 @@ impl Simulation {
     ) -> Result<Self, ConfigError> {
         Ok(Self {
             collider: Collider::new(&config, &tree, &viewer)?,
+            response: Response::default(),
             budget: FrameBudget::Unlimited,
             report: FrameReport::default(),
             next_index: 0,
@@ -510,7 +512,8 @@ impl Simulation {
 
     /// Phase: exchange the velocities of approaching pairs on the collision list (real and deemed).
     fn respond(&mut self) -> u32 {
-        exchange_velocities(&mut self.world, self.collider.collisions())
+        self.response
+            .exchange(&mut self.world, self.collider.collisions())
     }
 
     /// Exact colliding pairs among the current candidates (each resolved to completion).
