@@ -430,8 +430,7 @@ impl Collider {
                 };
                 self.fallback.run(&mut self.narrow, &work, &mut meter);
                 self.scheduler.forget();
-                let deemed = self.narrow.deem_open();
-                self.narrow.remember_witnesses(input.world.len());
+                let deemed = self.narrow.close_frame(input.world.len());
                 profile.prioritise_ns = 0;
                 profile.narrow_ns = clock.now_ns() - t0;
                 r.candidate_pairs = n as u32;
@@ -608,8 +607,7 @@ impl Collider {
                 }
             }
         }
-        let deemed = self.narrow.deem_open();
-        self.narrow.remember_witnesses(input.world.len());
+        let deemed = self.narrow.close_frame(input.world.len());
         let t2 = clock.now_ns();
         // The foveal pass is sphere tests: narrow-phase time.
         profile.prioritise_ns = (t1 - t0).saturating_sub(pass_ns);

@@ -319,6 +319,9 @@ pub struct NarrowPhase {
     arena: Vec<[u16; 2]>,
     /// Per body: a partner it collided with last frame and the leaf pair that proved it.
     witness: Vec<Witness>,
+    /// The bodies `witness` holds one for (some more than once): a frame forgets the last
+    /// frame's witnesses by these alone (see [`Self::forget_witnesses`]).
+    witnessed: Vec<u32>,
     spare: Vec<[u16; 2]>,
     /// Scratch arenas of the extra lanes of [`Self::resolve_all`].
     lane_arenas: Vec<Vec<[u16; 2]>>,
@@ -397,15 +400,79 @@ impl NarrowPhase {
     /// Keep, for each body, one pair it was resolved colliding with this frame and the leaf pair
     /// that proved it; [`Self::step`] tries that leaf pair first next frame.
     pub fn remember_witnesses(&mut self, bodies: usize) {
-        self.witness.clear();
-        self.witness.resize(bodies, NO_WITNESS);
+        self.forget_witnesses(bodies);
         for p in &self.pairs {
             if p.status == PairStatus::Colliding {
                 self.witness[p.a as usize] = Witness {
                     partner: p.b,
                     leaves: p.last,
                 };
+                self.witnessed.push(p.a);
             }
+        }
+        self.keep_witnessed_bounded();
+    }
+
+    /// End a frame whose pairs were not resolved by [`Self::resolve_frame`]: deem every open
+    /// pair, remember the witnesses of the colliding ones ([`Self::remember_witnesses`]) and
+    /// list the pairs on the collision list, colliding or deemed, for [`Self::colliding`]. Returns
+    /// the pairs deemed.
+    ///
+    /// One pass over the pairs instead of three (deeming, witnesses, and the response's scan of
+    /// every status): each is a read of every pair state, 24 bytes a pair, and all three came
+    /// after the budgeted work, in the tail a whole-frame budget must keep for them.
+    pub fn close_frame(&mut self, bodies: usize) -> u32 {
+        self.forget_witnesses(bodies);
+        if self.run_hits.is_empty() {
+            self.run_hits.push(Vec::new());
+        }
+        let listed = &mut self.run_hits[0];
+        listed.clear();
+        let mut deemed = 0;
+        for (i, p) in self.pairs.iter_mut().enumerate() {
+            if p.status.is_open() {
+                p.status = PairStatus::Deemed;
+                deemed += 1;
+            } else if p.status == PairStatus::Colliding {
+                self.witness[p.a as usize] = Witness {
+                    partner: p.b,
+                    leaves: p.last,
+                };
+                self.witnessed.push(p.a);
+            }
+            if p.status.is_collision() {
+                listed.push(i as u32);
+            }
+        }
+        // Like the arena: storage for one pathological frame's list is not kept for good.
+        if listed.capacity() > 4 * listed.len().max(ARENA_KEEP) {
+            listed.shrink_to(2 * listed.len().max(ARENA_KEEP));
+        }
+        self.hit_runs = 1;
+        self.keep_witnessed_bounded();
+        deemed
+    }
+
+    /// Clear the last frame's witnesses for a frame of `bodies` bodies. Only the entries set are
+    /// cleared: clearing the whole array (12 bytes a body) took about a millisecond a frame at a
+    /// million bodies, in the tail of a budgeted frame, where a few hundred thousand were set.
+    fn forget_witnesses(&mut self, bodies: usize) {
+        if self.witness.len() == bodies {
+            for &a in &self.witnessed {
+                self.witness[a as usize] = NO_WITNESS;
+            }
+        } else {
+            self.witness.clear();
+            self.witness.resize(bodies, NO_WITNESS);
+        }
+        self.witnessed.clear();
+    }
+
+    /// Storage for one pathological frame's witnesses is not kept for good.
+    fn keep_witnessed_bounded(&mut self) {
+        let len = self.witnessed.len().max(ARENA_KEEP);
+        if self.witnessed.capacity() > 4 * len {
+            self.witnessed.shrink_to(2 * len);
         }
     }
 
@@ -418,6 +485,7 @@ impl NarrowPhase {
     pub fn renumber(&mut self, new_of_old: &[u32]) {
         let old = std::mem::take(&mut self.witness);
         self.witness = vec![NO_WITNESS; old.len()];
+        self.witnessed.clear();
         for (a, w) in old.iter().enumerate() {
             if w.partner == NO_WITNESS.partner {
                 continue;
@@ -441,6 +509,7 @@ impl NarrowPhase {
                 )
             };
             self.witness[slot as usize] = kept;
+            self.witnessed.push(slot);
         }
         self.pairs.clear();
         // The colliding lists index the pairs just dropped.
@@ -557,15 +626,16 @@ impl NarrowPhase {
         let (runs, tallies) = self.resolve_runs(Some(candidates), tree, world, threads, tally);
         self.hit_runs = runs;
         // The witnesses in pair order, as `remember_witnesses` writes them.
-        self.witness.clear();
-        self.witness.resize(world.len(), NO_WITNESS);
+        self.forget_witnesses(world.len());
         for &i in self.run_hits[..runs].iter().flatten() {
             let p = &self.pairs[i as usize];
             self.witness[p.a as usize] = Witness {
                 partner: p.b,
                 leaves: p.last,
             };
+            self.witnessed.push(p.a);
         }
+        self.keep_witnessed_bounded();
         tallies
     }
 
@@ -706,9 +776,10 @@ impl NarrowPhase {
         }
     }
 
-    /// The indices of the pairs the last [`Self::resolve_frame`] found colliding, in pair order,
-    /// or `None` if the frame was started otherwise: an exact frame's response then reads its
-    /// few colliding pairs instead of every pair's status.
+    /// The indices of the pairs on this frame's collision list, in pair order: those the last
+    /// [`Self::resolve_frame`] found colliding, or those [`Self::close_frame`] listed (colliding
+    /// or deemed); `None` if the frame was started and ended otherwise. The response then reads
+    /// these pairs instead of every pair's status.
     pub fn colliding(&self) -> Option<impl Iterator<Item = usize> + '_> {
         (self.hit_runs > 0).then(|| {
             self.run_hits[..self.hit_runs]
@@ -1901,6 +1972,66 @@ mod tests {
                 "threads {threads}: after renumber"
             );
         }
+    }
+
+    /// A budgeted frame closed in one pass ends as deeming the open pairs, remembering the
+    /// witnesses and scanning every status for the collision list end it: the same states, the
+    /// same witnesses (last frame's cleared where no pair collides again, including after a
+    /// renumbering), and the listed pairs those the scan finds, in pair order.
+    #[test]
+    fn closing_a_frame_in_one_pass_matches_deeming_remembering_and_scanning() {
+        let (tree, mut world, pairs) = paper_pairs(3_000, 5, 4);
+        let key = |np: &NarrowPhase| -> Vec<_> {
+            np.pairs
+                .iter()
+                .map(|p| (p.a, p.b, p.status, p.levels, p.resolved_level, p.last))
+                .collect()
+        };
+        let (mut apart, mut closed) = (NarrowPhase::default(), NarrowPhase::default());
+        let reversed: Vec<u32> = (0..world.len() as u32).rev().collect();
+        let (mut witnessed, mut deemed) = (0, 0);
+        for frame in 0..6 {
+            // Frames of different candidates, each with some pairs resolved, some stepped once
+            // and left open, and the rest untested.
+            let cands = &pairs[(frame % 3) * pairs.len() / 8..];
+            for np in [&mut apart, &mut closed] {
+                np.reset(cands);
+                for i in 0..np.pairs.len() {
+                    match (i + frame) % 3 {
+                        0 => {
+                            np.resolve_fully(i, &tree, &world);
+                        }
+                        1 => {
+                            np.step(i, &tree, &world);
+                        }
+                        _ => {}
+                    }
+                }
+            }
+            let n = apart.deem_open();
+            apart.remember_witnesses(world.len());
+            assert_eq!(closed.close_frame(world.len()), n, "frame {frame}");
+            assert_eq!(key(&closed), key(&apart), "frame {frame}");
+            assert_eq!(closed.witness, apart.witness, "frame {frame}");
+            let scanned: Vec<usize> = (0..apart.pairs.len())
+                .filter(|&i| apart.pairs[i].status.is_collision())
+                .collect();
+            let listed: Option<Vec<usize>> = closed.colliding().map(Iterator::collect);
+            assert_eq!(listed, Some(scanned), "frame {frame}");
+            witnessed += apart.witness.iter().filter(|w| **w != NO_WITNESS).count();
+            deemed += n;
+            if frame == 3 {
+                apart.renumber(&reversed);
+                closed.renumber(&reversed);
+                assert_eq!(closed.witness, apart.witness);
+                assert!(closed.colliding().is_none());
+            }
+            world.integrate(0.01);
+        }
+        assert!(
+            witnessed > 0 && deemed > 0,
+            "{witnessed} witnesses, {deemed} deemed"
+        );
     }
 
     /// Eight-lane and four-lane tests keep the same children in the same order: an exact frame
