@@ -136,6 +136,14 @@ impl Mode {
             Self::BudgetMs(ms) => Some(ms),
         }
     }
+
+    /// `exact` or `budget`, as the CSV files name the mode.
+    fn kind(&self) -> &'static str {
+        match self {
+            Self::Exact => "exact",
+            Self::BudgetMs(_) => "budget",
+        }
+    }
 }
 
 /// One configuration, as handed to a child process.
@@ -214,6 +222,26 @@ pub struct RunResult {
     /// child).
     #[serde(default)]
     pub round: u32,
+    /// Every measured frame, in order: a p99 is one or two frames, and whether those were a
+    /// phase the engine mispredicted or a stall of the machine shows only frame by frame
+    /// (`frames.csv`).
+    #[serde(default)]
+    pub frame_trace: Vec<FrameSample>,
+}
+
+/// One measured frame of a run.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FrameSample {
+    /// Whole step (ms).
+    pub step_ms: f64,
+    /// Each profiled phase (ns), in the order of [`RunResult::phase_share`].
+    pub phases_ns: Vec<u64>,
+    /// Pairs deemed (not settled exactly).
+    pub deemed: u32,
+    /// Broad-phase regions left stale.
+    pub stale_regions: u32,
+    /// Sphere tests.
+    pub sphere_tests: u64,
 }
 
 /// The whole command.
@@ -547,11 +575,20 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
     let (mut good, mut foveal, mut candidates, mut deemed, mut tests) =
         (0u64, 0u64, 0u64, 0u64, 0u64);
     let (mut stale_frames, mut stale_regions, mut stale_pairs, mut regions) = (0u64, 0u64, 0u64, 0);
+    let mut frame_trace = Vec::with_capacity(frames);
     for _ in 0..frames {
         let t = Instant::now();
         let r = sim.step(fixation, &clock);
-        step_ms.push(t.elapsed().as_secs_f64() * 1e3);
+        let ms = t.elapsed().as_secs_f64() * 1e3;
+        step_ms.push(ms);
         let ph = phases(&r.profile);
+        frame_trace.push(FrameSample {
+            step_ms: ms,
+            phases_ns: ph.iter().map(|(_, ns)| *ns).collect(),
+            deemed: r.deemed,
+            stale_regions: r.stale_regions,
+            sphere_tests: r.sphere_tests,
+        });
         phases_ms.push(ph.iter().map(|(_, ns)| *ns as f64).sum::<f64>() * 1e-6);
         if phase_totals.is_empty() {
             phase_totals = ph.iter().map(|(k, _)| (k.clone(), 0)).collect();
@@ -606,6 +643,7 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         warmup_s,
         load1_start,
         round: 0,
+        frame_trace,
     })
 }
 
@@ -1098,11 +1136,7 @@ pub fn csv(results: &[RunResult]) -> String {
             s,
             "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.spec.n,
-            if r.spec.mode == Mode::Exact {
-                "exact"
-            } else {
-                "budget"
-            },
+            r.spec.mode.kind(),
             opt(r.spec.mode.budget_ms()),
             r.spec.threads,
             r.spec.broad_phase.resolve(r.spec.n as usize).name(),
@@ -1145,8 +1179,54 @@ pub fn csv(results: &[RunResult]) -> String {
     s
 }
 
+/// One CSV row per measured frame of every run: the run's configuration and round, the frame's
+/// place in the run (0-based, after the warm-up), its whole step and each profiled phase (ms),
+/// deemed pairs, stale regions and sphere tests.
+pub fn frames_csv(results: &[RunResult]) -> String {
+    let names = phase_names(results);
+    let mut s = String::from("n,mode,budget_ms,threads,broad_phase,baseline,round,frame,step_ms");
+    for k in &names {
+        let _ = write!(s, ",{k}_ms");
+    }
+    s.push_str(",deemed,stale_regions,sphere_tests\n");
+    for r in results {
+        for (i, f) in r.frame_trace.iter().enumerate() {
+            let _ = write!(
+                s,
+                "{},{},{},{},{},{},{},{},{}",
+                r.spec.n,
+                r.spec.mode.kind(),
+                r.spec
+                    .mode
+                    .budget_ms()
+                    .map_or(String::new(), |v| v.to_string()),
+                r.spec.threads,
+                r.spec.broad_phase.resolve(r.spec.n as usize).name(),
+                r.spec.is_baseline(),
+                r.round,
+                i,
+                f.step_ms
+            );
+            for k in &names {
+                let ns = r
+                    .phase_share
+                    .iter()
+                    .position(|(name, _)| name == k)
+                    .and_then(|at| f.phases_ns.get(at));
+                let _ = write!(
+                    s,
+                    ",{}",
+                    ns.map_or(String::new(), |ns| (*ns as f64 * 1e-6).to_string())
+                );
+            }
+            let _ = writeln!(s, ",{},{},{}", f.deemed, f.stale_regions, f.sphere_tests);
+        }
+    }
+    s
+}
+
 /// Run every configuration of `cfg`, each in a child process of `exe` (the `foveal-bench`
-/// binary), and write `scale.csv` and `scale.md` under `cfg.out`. `progress` prints one line per
+/// binary), and write `scale.csv`, `frames.csv` and `scale.md` under `cfg.out`. `progress` prints one line per
 /// run to stderr.
 pub fn run(cfg: &ScaleConfig, exe: &Path, progress: bool) -> Result<ScaleOutput, ScaleError> {
     cfg.validate()?;
@@ -1189,7 +1269,10 @@ pub fn run(cfg: &ScaleConfig, exe: &Path, progress: bool) -> Result<ScaleOutput,
     let md_path = cfg.out.join("scale.md");
     let md = format!("# foveal-bench scale\n\n{}", markdown(&out));
     std::fs::write(&md_path, md).map_err(|e| ScaleError::io(&md_path, e))?;
-    out.files = vec![csv_path, md_path];
+    let frames_path = cfg.out.join("frames.csv");
+    std::fs::write(&frames_path, frames_csv(&out.runs))
+        .map_err(|e| ScaleError::io(&frames_path, e))?;
+    out.files = vec![csv_path, frames_path, md_path];
     Ok(out)
 }
 
@@ -1251,6 +1334,54 @@ mod tests {
         }
     }
 
+    /// A run keeps every measured frame, and `frames.csv` gives each its own row: the step the
+    /// run's percentiles were taken from, each phase under its own column, in the run's order.
+    #[test]
+    fn every_measured_frame_is_traced_and_written_out() {
+        let spec = RunSpec {
+            n: 1_500,
+            threads: 1,
+            broad_phase: BroadPhaseKind::Auto,
+            mode: Mode::BudgetMs(4.0),
+            scheduler: SchedulerKind::Priced,
+            fovea_first: false,
+            seed: 3,
+            warmup: 2,
+            frames: 7,
+        };
+        let mut r = run_one(&spec).expect("a small run");
+        r.round = 2;
+        assert_eq!(r.frame_trace.len(), 7);
+        let mut steps: Vec<f64> = r.frame_trace.iter().map(|f| f.step_ms).collect();
+        steps.sort_by(f64::total_cmp);
+        assert_eq!(r.step_max_ms, steps[6]);
+        assert_eq!(r.step_p50_ms, steps[3]);
+        let csv = frames_csv(std::slice::from_ref(&r));
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(lines.len(), 1 + 7, "{csv}");
+        let header: Vec<&str> = lines[0].split(',').collect();
+        let col = |name: &str| {
+            header
+                .iter()
+                .position(|h| *h == name)
+                .unwrap_or_else(|| panic!("{name} missing from {header:?}"))
+        };
+        let broad_at = r.phase_share.iter().position(|(k, _)| k == "broad");
+        let broad_at = broad_at.expect("a broad phase");
+        for (i, line) in lines[1..].iter().enumerate() {
+            let cells: Vec<&str> = line.split(',').collect();
+            assert_eq!(cells.len(), header.len(), "{line}");
+            assert_eq!(cells[col("frame")], i.to_string());
+            assert_eq!(cells[col("round")], "2");
+            assert_eq!(cells[col("mode")], "budget");
+            let f = &r.frame_trace[i];
+            assert_eq!(cells[col("step_ms")].parse::<f64>().ok(), Some(f.step_ms));
+            let broad_ms: f64 = cells[col("broad_ms")].parse().expect("a number");
+            assert!((broad_ms - f.phases_ns[broad_at] as f64 * 1e-6).abs() < 1e-9);
+            assert_eq!(cells[col("deemed")], f.deemed.to_string());
+        }
+    }
+
     /// A result of `spec` whose step p50 and p99 are `p50` and `p99`.
     fn result(spec: &RunSpec, p50: f64, p99: f64, round: u32) -> RunResult {
         RunResult {
@@ -1277,6 +1408,7 @@ mod tests {
             warmup_s: 0.0,
             load1_start: None,
             round,
+            frame_trace: Vec::new(),
         }
     }
 
