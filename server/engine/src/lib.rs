@@ -53,6 +53,7 @@ pub mod config;
 pub mod export;
 pub mod falloff;
 pub mod fixation;
+pub mod guard;
 pub mod math;
 pub mod metrics;
 pub mod narrow_phase;

@@ -134,6 +134,9 @@ pub struct FrameReport {
     /// Of the stale regions, those that may hold a pair within [`FOVEAL_DEG`] of the fixation:
     /// when not 0, [`Self::foveal_pairs`] misses what those regions hold.
     pub foveal_stale: u32,
+    /// How much earlier than its wall-clock budget this frame aimed to end (ns): the guard band
+    /// learnt from the recent frames' lateness (see `guard`). 0 under other budgets.
+    pub guard_ns: u64,
     /// Per-phase timings.
     pub profile: PhaseProfile,
     /// Exact answer for the deemed pairs, when auditing.

@@ -9,6 +9,7 @@ use crate::budget::{Clock, FrameBudget, FrozenClock};
 use crate::collider::{Collider, FrameInput};
 use crate::config::{BudgetSpec, ConfigError, SimConfig};
 use crate::fixation::Fixation;
+use crate::guard::Guard;
 use crate::narrow_phase::{NarrowPhase, PairState};
 use crate::perception::Viewer;
 use crate::report::{FrameReport, PhaseProfile};
@@ -46,6 +47,8 @@ pub struct Simulation {
     /// back after it (a wall-clock budget's frames end this much earlier).
     frame_end_ns: u64,
     handback_ns: u64,
+    /// How much earlier than a wall-clock budget frames aim to end, learnt from their lateness.
+    guard: Guard,
 }
 
 /// A pool of `threads` threads, or none for one: a frame on one thread runs where it is called.
@@ -146,6 +149,7 @@ impl Simulation {
             pool: thread_pool(config.threads as usize),
             frame_end_ns: 0,
             handback_ns: 0,
+            guard: Guard::default(),
             tree,
             world,
             broad,
@@ -276,13 +280,24 @@ impl Simulation {
             Some(pool) => pool.install(|| self.step_from(t0, fixation, clock)),
             None => self.step_from(t0, fixation, clock),
         }
-        if pooled && matches!(self.budget, FrameBudget::Wall(_)) {
+        let Some(ns) = (match self.budget {
+            FrameBudget::Wall(ns) => Some(ns),
+            _ => None,
+        }) else {
+            return &self.report;
+        };
+        // The frame as its caller sees it ends here (after the pool's hand-back): its lateness
+        // sets the guard band of the next frames.
+        let end = clock.now_ns();
+        self.guard
+            .learn(ns, self.report.guard_ns, end.saturating_sub(t0));
+        if pooled {
             // The pool hands the finished frame back after the frame's last clock read: a wait
             // (7 us median, 35 us at the 99th percentile at N = 10,000 on two threads) that the
             // frame's deadline did not see. Learnt as an envelope (a quarter of a rise, a 32nd
             // of a fall a frame) and taken off the next frames' deadlines, so that the frame the
             // caller sees, not only the engine's part of it, holds the budget.
-            let back = clock.now_ns().saturating_sub(self.frame_end_ns);
+            let back = end.saturating_sub(self.frame_end_ns);
             self.handback_ns = if back > self.handback_ns {
                 self.handback_ns + (back - self.handback_ns) / 4
             } else {
@@ -331,8 +346,16 @@ impl Simulation {
     fn step_from(&mut self, t0: u64, fixation: Option<Fixation>, clock: &dyn Clock) {
         let mut profile = PhaseProfile::default();
         // The frame budget counts from here: integration and the broad phase spend it too.
+        // Less the pool's learnt hand-back and the guard band learnt from late frames (see
+        // `guard`).
+        let guard_ns = match self.budget {
+            FrameBudget::Wall(_) => self.guard.margin_ns(),
+            _ => 0,
+        };
         let budget = match self.budget.starting_at(t0) {
-            FrameBudget::Deadline(d) => FrameBudget::Deadline(d.saturating_sub(self.handback_ns)),
+            FrameBudget::Deadline(d) => {
+                FrameBudget::Deadline(d.saturating_sub(self.handback_ns + guard_ns))
+            }
             b => b,
         };
         let deadline = match (self.budget, budget) {
@@ -365,6 +388,7 @@ impl Simulation {
             index: self.next_index,
             fixation,
             fixation_rejected,
+            guard_ns,
             ..FrameReport::default()
         };
         let shedding = deadline.filter(|_| !self.broad.regions().is_empty());
@@ -688,6 +712,89 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// Frames that stall (here the clock jumps at a reading in the frame's last ticks, after its
+    /// tail, as if the thread had not run for a while) end late; after two in the window the
+    /// next frames aim earlier by about the lesser stall and end that much before their budget,
+    /// and once the stalls have left the window the guard is back where it was. A lone stall
+    /// moves nothing. (On this clock every frame ends a few readings after its aim, which is the
+    /// guard it keeps without stalls.)
+    #[test]
+    fn late_frames_make_the_next_frames_aim_earlier_until_they_are_forgotten() {
+        use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+        const TICK: u64 = 1_000;
+        struct Stalling {
+            now: AtomicU64,
+            stall_from: AtomicU64,
+            stall_ns: AtomicU64,
+        }
+        impl Clock for Stalling {
+            fn now_ns(&self) -> u64 {
+                let mut step = TICK;
+                if self.now.load(Relaxed) >= self.stall_from.load(Relaxed) {
+                    self.stall_from.store(u64::MAX, Relaxed);
+                    step += self.stall_ns.load(Relaxed);
+                }
+                self.now.fetch_add(step, Relaxed) + step
+            }
+        }
+        let budget_ns = 200_000;
+        let mut sim = Simulation::new(SimConfig {
+            scene: SceneConfig::paper(3_000, 3),
+            scheduler: crate::config::SchedulerKind::RoundRobin,
+            budget: BudgetSpec::WallMs(budget_ns as f64 * 1e-6),
+            ..SimConfig::default()
+        })
+        .expect("valid");
+        let clock = Stalling {
+            now: AtomicU64::new(0),
+            stall_from: AtomicU64::new(u64::MAX),
+            stall_ns: AtomicU64::new(0),
+        };
+        let fixation = Some(Fixation::at(0.5, 0.5));
+        let mut frame = |stall_ns: u64| {
+            let start = clock.now.load(Relaxed);
+            if stall_ns > 0 {
+                // The frame aims to end `margin` before its budget.
+                let margin = sim.guard.margin_ns();
+                clock
+                    .stall_from
+                    .store(start + budget_ns - margin - TICK, Relaxed);
+                clock.stall_ns.store(stall_ns, Relaxed);
+            }
+            let r = sim.step(fixation, &clock);
+            assert!(r.budget_exhausted, "a frame the budget cuts");
+            let guard = r.guard_ns;
+            let spent = clock.now.load(Relaxed) - start;
+            clock.stall_from.store(u64::MAX, Relaxed);
+            (guard, spent)
+        };
+        // Past the first frames' learning (and their lateness, forgotten with the window).
+        for _ in 0..crate::guard::GUARD_WINDOW + 10 {
+            frame(0);
+        }
+        let (calm, spent) = frame(0);
+        assert!(calm <= 3 * TICK, "{calm}");
+        assert!(spent <= budget_ns + TICK, "{spent}");
+        frame(300_000);
+        // (Frames without stalls end a reading earlier or later from frame to frame.)
+        assert!(frame(0).0 <= calm + TICK, "a lone stall");
+        frame(10_000);
+        let (guard, spent) = frame(0);
+        // The second stall's lateness: what it added to the frame's usual lateness.
+        assert!(
+            (calm + 5_000..=calm + 12_000).contains(&guard),
+            "guard {guard}, {calm} without stalls"
+        );
+        assert!(
+            spent <= budget_ns - guard + calm + TICK,
+            "{spent} with a guard of {guard}"
+        );
+        for _ in 0..crate::guard::GUARD_WINDOW {
+            frame(0);
+        }
+        assert!(frame(0).0 <= calm + TICK, "the stalls have left the window");
     }
 
     /// A wall-clock budget that integration and the broad phase spend whole is reported as such
