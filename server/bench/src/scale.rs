@@ -242,6 +242,13 @@ pub struct FrameSample {
     pub stale_regions: u32,
     /// Sphere tests.
     pub sphere_tests: u64,
+    /// How much earlier than its budget the frame aimed to end (`FrameReport::guard_ns`, ns).
+    #[serde(default)]
+    pub guard_ns: u64,
+    /// Every candidate pair within 5 degrees of the fixation was settled exactly (see
+    /// [`RunResult::foveal_exact_share`]).
+    #[serde(default)]
+    pub foveal_exact: bool,
 }
 
 /// The whole command.
@@ -582,12 +589,15 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         let ms = t.elapsed().as_secs_f64() * 1e3;
         step_ms.push(ms);
         let ph = phases(&r.profile);
+        let foveal_exact = r.foveal_deemed == 0 && r.foveal_stale == 0;
         frame_trace.push(FrameSample {
             step_ms: ms,
             phases_ns: ph.iter().map(|(_, ns)| *ns).collect(),
             deemed: r.deemed,
             stale_regions: r.stale_regions,
             sphere_tests: r.sphere_tests,
+            guard_ns: r.guard_ns,
+            foveal_exact,
         });
         phases_ms.push(ph.iter().map(|(_, ns)| *ns as f64).sum::<f64>() * 1e-6);
         if phase_totals.is_empty() {
@@ -596,7 +606,7 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         for ((_, total), (_, ns)) in phase_totals.iter_mut().zip(&ph) {
             *total += ns;
         }
-        good += u64::from(r.foveal_deemed == 0 && r.foveal_stale == 0);
+        good += u64::from(foveal_exact);
         stale_frames += u64::from(r.stale_regions > 0);
         stale_regions += u64::from(r.stale_regions);
         stale_pairs += u64::from(r.stale_pairs);
@@ -1181,14 +1191,15 @@ pub fn csv(results: &[RunResult]) -> String {
 
 /// One CSV row per measured frame of every run: the run's configuration and round, the frame's
 /// place in the run (0-based, after the warm-up), its whole step and each profiled phase (ms),
-/// deemed pairs, stale regions and sphere tests.
+/// deemed pairs, stale regions, sphere tests, the guard band it aimed early by (ms), and whether
+/// every pair within 5 degrees of the fixation was settled exactly.
 pub fn frames_csv(results: &[RunResult]) -> String {
     let names = phase_names(results);
     let mut s = String::from("n,mode,budget_ms,threads,broad_phase,baseline,round,frame,step_ms");
     for k in &names {
         let _ = write!(s, ",{k}_ms");
     }
-    s.push_str(",deemed,stale_regions,sphere_tests\n");
+    s.push_str(",deemed,stale_regions,sphere_tests,guard_ms,foveal_exact\n");
     for r in results {
         for (i, f) in r.frame_trace.iter().enumerate() {
             let _ = write!(
@@ -1219,7 +1230,15 @@ pub fn frames_csv(results: &[RunResult]) -> String {
                     ns.map_or(String::new(), |ns| (*ns as f64 * 1e-6).to_string())
                 );
             }
-            let _ = writeln!(s, ",{},{},{}", f.deemed, f.stale_regions, f.sphere_tests);
+            let _ = writeln!(
+                s,
+                ",{},{},{},{},{}",
+                f.deemed,
+                f.stale_regions,
+                f.sphere_tests,
+                f.guard_ns as f64 * 1e-6,
+                f.foveal_exact
+            );
         }
     }
     s
