@@ -438,7 +438,8 @@ struct ScaleArgs {
     /// Thread counts, comma separated.
     #[arg(long, value_delimiter = ',', default_value = "1,2")]
     threads: Vec<u32>,
-    /// Measured frames per run (default 600 / 200 / 20 at 10k / 100k / 1M).
+    /// Measured frames per run (default 600 / 200 at 10k / 100k; at 1M, 20 exact and 200 with a
+    /// budget).
     #[arg(long)]
     frames: Option<u32>,
     /// Uncounted warm-up frames per run (default 60, one second of simulated time).
