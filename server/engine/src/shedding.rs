@@ -50,8 +50,11 @@ pub const METRICS_SHARE: f64 = 0.015;
 pub const SAMPLE_NS: f64 = 150.0;
 
 /// The narrow phase's reserve covers this multiple of the foveal pass's expected time, so that
-/// a frame with a few more foveal pairs than the last still settles them all.
-const FOVEAL_HEADROOM: f64 = 1.25;
+/// a frame with a few more foveal pairs than the last still settles them all. 1.25 left 0.98-0.99
+/// of the frames with every foveal pair settled at 100,000 bodies with 16 ms on two threads (the
+/// issue asks 0.99), the misses frames whose pass ran slow; 1.5 gave 0.992-0.997 over four runs
+/// each, alternated, for about 5% fewer candidate pairs searched in the periphery.
+const FOVEAL_HEADROOM: f64 = 1.5;
 
 /// Most of the budget the foveal pass's reserve may claim: the rest of the scene is searched with
 /// what is left.
