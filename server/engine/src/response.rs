@@ -13,7 +13,8 @@ use crate::world::World;
 /// order, so each pair's four reads (two positions, two velocities) were mostly misses of the
 /// processor's caches: at 100,000 bodies with a 16 ms budget (130,000 pairs on the list, most of
 /// them deemed) the response took 3 ms a frame, a fifth of the budget, all of it in the frame's
-/// tail. 8, 16, 32 and 64 ahead measured 0.78, 0.73, 0.71 and 0.71 of the time without.
+/// tail. 8, 16, 32 and 64 ahead took 0.81, 0.75, 0.73 and 0.73 of the time without (medians over
+/// ten frames, docs/BENCHMARKS.md).
 const AHEAD: usize = 32;
 
 /// The response phase, with storage for a frame's pairs kept from frame to frame.
