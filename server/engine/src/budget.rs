@@ -149,6 +149,14 @@ impl<'c> Meter<'c> {
         self.exhausted
     }
 
+    /// [`Self::exhausted`], reading a wall clock now whatever the spacing of the reads: for a
+    /// caller about to start work that costs something before its first check.
+    #[inline]
+    pub fn exhausted_now(&mut self, tests: u64) -> bool {
+        self.countdown = 0;
+        self.exhausted(tests)
+    }
+
     /// Whether a wall-clock deadline has passed (always false for other budgets). For work that does
     /// no sphere tests, such as prioritisation, which a sphere-test budget does not count.
     #[inline]
@@ -298,6 +306,23 @@ mod tests {
         assert!(!m.exhausted(0));
         clock.0.store(100, Relaxed);
         assert!(calls_until_stopped(&mut m) <= CLOCK_STRIDE as usize);
+    }
+
+    /// A read forced by `exhausted_now` sees a deadline that has passed since the last read, which
+    /// the spaced reads would notice only some calls later; a test budget is unaffected.
+    #[test]
+    fn a_forced_read_sees_the_deadline_at_once() {
+        let clock = Manual(AtomicU64::new(0));
+        let mut m = Meter::new(FrameBudget::Deadline(10_000_000), &clock);
+        assert!(!m.exhausted(0));
+        clock.0.store(10_000_000, Relaxed);
+        assert!(!m.exhausted(0), "not read yet");
+        assert!(m.exhausted_now(0));
+        assert!(m.exhausted(0), "and it stays stopped");
+        let c = FrozenClock;
+        let mut t = Meter::new(FrameBudget::Tests(10), &c);
+        assert!(!t.exhausted_now(9));
+        assert!(t.exhausted_now(10));
     }
 
     /// Calls of `m.exhausted` that say go on before one says stop.
