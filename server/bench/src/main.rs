@@ -438,8 +438,8 @@ struct ScaleArgs {
     /// Thread counts, comma separated.
     #[arg(long, value_delimiter = ',', default_value = "1,2")]
     threads: Vec<u32>,
-    /// Measured frames per run (default 600 / 200 at 10k / 100k; at 1M, 20 exact and 200 with a
-    /// budget).
+    /// Measured frames per run (default 600 at 10k; 200 exact and 600 with a budget at 100k; 20
+    /// exact and 200 with a budget at 1M).
     #[arg(long)]
     frames: Option<u32>,
     /// Uncounted warm-up frames per run (default 60, one second of simulated time).
