@@ -679,6 +679,18 @@ mod tests {
             .collect()
     }
 
+    /// The paper scene of `bodies` (seed 3), round-robin, under a wall-clock budget of
+    /// `budget_ns`.
+    fn round_robin_on_the_clock(bodies: u32, budget_ns: u64) -> Simulation {
+        Simulation::new(SimConfig {
+            scene: SceneConfig::paper(bodies, 3),
+            scheduler: crate::config::SchedulerKind::RoundRobin,
+            budget: BudgetSpec::WallMs(budget_ns as f64 * 1e-6),
+            ..SimConfig::default()
+        })
+        .expect("valid")
+    }
+
     /// A wall-clock budget at the paper's N (sweep and prune: nothing to shed but the narrow
     /// phase) covers the frame's tail too: after the first frames have learnt what deeming,
     /// response and metrics cost, the narrow phase stops early enough that the frame ends by its
@@ -686,13 +698,7 @@ mod tests {
     #[test]
     fn a_wall_clock_frame_at_the_papers_n_ends_by_its_deadline_tail_included() {
         let budget_ns = 200_000;
-        let mut sim = Simulation::new(SimConfig {
-            scene: SceneConfig::paper(500, 3),
-            scheduler: crate::config::SchedulerKind::RoundRobin,
-            budget: BudgetSpec::WallMs(budget_ns as f64 * 1e-6),
-            ..SimConfig::default()
-        })
-        .expect("valid");
+        let mut sim = round_robin_on_the_clock(500, budget_ns);
         assert!(sim.broad.regions().is_empty(), "sweep and prune at N = 500");
         let tick = 5_000;
         let clock = crate::budget::Ticking(std::sync::atomic::AtomicU64::new(0), tick);
@@ -740,13 +746,7 @@ mod tests {
             }
         }
         let budget_ns = 200_000;
-        let mut sim = Simulation::new(SimConfig {
-            scene: SceneConfig::paper(3_000, 3),
-            scheduler: crate::config::SchedulerKind::RoundRobin,
-            budget: BudgetSpec::WallMs(budget_ns as f64 * 1e-6),
-            ..SimConfig::default()
-        })
-        .expect("valid");
+        let mut sim = round_robin_on_the_clock(3_000, budget_ns);
         let clock = Stalling {
             now: AtomicU64::new(0),
             stall_from: AtomicU64::new(u64::MAX),
