@@ -1410,7 +1410,31 @@ mod tests {
             let broad_ms: f64 = cells[col("broad_ms")].parse().expect("a number");
             assert!((broad_ms - f.phases_ns[broad_at] as f64 * 1e-6).abs() < 1e-9);
             assert_eq!(cells[col("deemed")], f.deemed.to_string());
+            let guard_ms: f64 = cells[col("guard_ms")].parse().expect("a number");
+            assert!((guard_ms - f.guard_ns as f64 * 1e-6).abs() < 1e-12);
+            assert_eq!(cells[col("foveal_exact")], f.foveal_exact.to_string());
         }
+        // Budgeted runs above 30,000 bodies measure more frames than exact ones, so that their
+        // p99 is not one or two stalled frames.
+        let frames = |n, mode| default_frames(n, false, mode);
+        assert_eq!(
+            frames(10_000, Mode::Exact),
+            frames(10_000, Mode::BudgetMs(4.0))
+        );
+        assert_eq!(
+            [
+                frames(100_000, Mode::Exact),
+                frames(100_000, Mode::BudgetMs(16.0))
+            ],
+            [200, 600]
+        );
+        assert_eq!(
+            [
+                frames(1_000_000, Mode::Exact),
+                frames(1_000_000, Mode::BudgetMs(50.0))
+            ],
+            [20, 200]
+        );
     }
 
     /// A result of `spec` whose step p50 and p99 are `p50` and `p99`.

@@ -1977,7 +1977,8 @@ mod tests {
     /// A budgeted frame closed in one pass ends as deeming the open pairs, remembering the
     /// witnesses and scanning every status for the collision list end it: the same states, the
     /// same witnesses (last frame's cleared where no pair collides again, including after a
-    /// renumbering), and the listed pairs those the scan finds, in pair order.
+    /// renumbering and when the body count changes), and the listed pairs those the scan finds,
+    /// in pair order.
     #[test]
     fn closing_a_frame_in_one_pass_matches_deeming_remembering_and_scanning() {
         let (tree, mut world, pairs) = paper_pairs(3_000, 5, 4);
@@ -2008,11 +2009,26 @@ mod tests {
                     }
                 }
             }
+            // One frame counts more bodies (the witness array is then made anew).
+            let bodies = world.len() + if frame == 4 { 7 } else { 0 };
             let n = apart.deem_open();
-            apart.remember_witnesses(world.len());
-            assert_eq!(closed.close_frame(world.len()), n, "frame {frame}");
+            apart.remember_witnesses(bodies);
+            assert_eq!(closed.close_frame(bodies), n, "frame {frame}");
             assert_eq!(key(&closed), key(&apart), "frame {frame}");
             assert_eq!(closed.witness, apart.witness, "frame {frame}");
+            // And both hold this frame's witnesses alone, as a fresh array would.
+            let mut fresh = vec![NO_WITNESS; bodies];
+            for p in apart
+                .pairs
+                .iter()
+                .filter(|p| p.status == PairStatus::Colliding)
+            {
+                fresh[p.a as usize] = Witness {
+                    partner: p.b,
+                    leaves: p.last,
+                };
+            }
+            assert!(closed.witness == fresh, "frame {frame}: a stale witness");
             let scanned: Vec<usize> = (0..apart.pairs.len())
                 .filter(|&i| apart.pairs[i].status.is_collision())
                 .collect();
