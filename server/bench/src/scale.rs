@@ -1213,6 +1213,11 @@ pub fn frames_csv(results: &[RunResult]) -> String {
     }
     s.push_str(",deemed,stale_regions,sphere_tests,guard_ms,foveal_exact\n");
     for r in results {
+        // Where each named phase sits in this run's frames.
+        let at: Vec<Option<usize>> = names
+            .iter()
+            .map(|k| r.phase_share.iter().position(|(name, _)| name == k))
+            .collect();
         for (i, f) in r.frame_trace.iter().enumerate() {
             let _ = write!(
                 s,
@@ -1230,12 +1235,7 @@ pub fn frames_csv(results: &[RunResult]) -> String {
                 i,
                 f.step_ms
             );
-            for k in &names {
-                let ns = r
-                    .phase_share
-                    .iter()
-                    .position(|(name, _)| name == k)
-                    .and_then(|at| f.phases_ns.get(at));
+            for ns in at.iter().map(|at| at.and_then(|at| f.phases_ns.get(at))) {
                 let _ = write!(
                     s,
                     ",{}",

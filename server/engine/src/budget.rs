@@ -208,17 +208,21 @@ impl Clock for Ticking {
     }
 }
 
+/// A clock for tests that reads whatever `.0` was last set to.
+#[cfg(test)]
+pub(crate) struct Manual(pub std::sync::atomic::AtomicU64);
+
+#[cfg(test)]
+impl Clock for Manual {
+    fn now_ns(&self) -> u64 {
+        self.0.load(std::sync::atomic::Ordering::Relaxed)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
-
-    struct Manual(AtomicU64);
-    impl Clock for Manual {
-        fn now_ns(&self) -> u64 {
-            self.0.load(Relaxed)
-        }
-    }
 
     #[test]
     fn test_budget_stops_at_the_count_and_stays_stopped() {

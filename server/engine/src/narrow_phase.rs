@@ -303,6 +303,17 @@ const NO_WITNESS: Witness = Witness {
     leaves: [NONE, NONE],
 };
 
+/// Keep colliding pair `p`'s witness under its first body, and note the body as holding one (see
+/// [`NarrowPhase::forget_witnesses`]).
+#[inline]
+fn remember(witness: &mut [Witness], witnessed: &mut Vec<u32>, p: &PairState) {
+    witness[p.a as usize] = Witness {
+        partner: p.b,
+        leaves: p.last,
+    };
+    witnessed.push(p.a);
+}
+
 /// All candidate pairs of a frame and their traversal states.
 #[derive(Debug, Clone, Default)]
 pub struct NarrowPhase {
@@ -403,11 +414,7 @@ impl NarrowPhase {
         self.forget_witnesses(bodies);
         for p in &self.pairs {
             if p.status == PairStatus::Colliding {
-                self.witness[p.a as usize] = Witness {
-                    partner: p.b,
-                    leaves: p.last,
-                };
-                self.witnessed.push(p.a);
+                remember(&mut self.witness, &mut self.witnessed, p);
             }
         }
         self.keep_witnessed_bounded();
@@ -434,11 +441,7 @@ impl NarrowPhase {
                 p.status = PairStatus::Deemed;
                 deemed += 1;
             } else if p.status == PairStatus::Colliding {
-                self.witness[p.a as usize] = Witness {
-                    partner: p.b,
-                    leaves: p.last,
-                };
-                self.witnessed.push(p.a);
+                remember(&mut self.witness, &mut self.witnessed, p);
             }
             if p.status.is_collision() {
                 listed.push(i as u32);
@@ -628,12 +631,11 @@ impl NarrowPhase {
         // The witnesses in pair order, as `remember_witnesses` writes them.
         self.forget_witnesses(world.len());
         for &i in self.run_hits[..runs].iter().flatten() {
-            let p = &self.pairs[i as usize];
-            self.witness[p.a as usize] = Witness {
-                partner: p.b,
-                leaves: p.last,
-            };
-            self.witnessed.push(p.a);
+            remember(
+                &mut self.witness,
+                &mut self.witnessed,
+                &self.pairs[i as usize],
+            );
         }
         self.keep_witnessed_bounded();
         tallies

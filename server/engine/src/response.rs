@@ -51,11 +51,6 @@ impl Response {
 /// Pairs' worth of storage a [`Response`] keeps however few the last frame had.
 const KEEP: usize = 4096;
 
-/// Exchange velocities of each approaching pair in `pairs`, in order. Returns how many exchanged.
-pub fn exchange_velocities(world: &mut World, pairs: impl IntoIterator<Item = (u32, u32)>) -> u32 {
-    Response::default().exchange(world, pairs)
-}
-
 fn exchange_listed(world: &mut World, pairs: &[(u32, u32)]) -> u32 {
     let prefetch = Prefetcher::new();
     let (velocity, position) = (&mut world.velocity, &world.position);
@@ -121,10 +116,10 @@ mod tests {
         w.position = vec![Vec3::ZERO, Vec3::X, Vec3::new(5.0, 0.0, 0.0)];
         w.velocity = vec![Vec3::X, -Vec3::X, Vec3::Y];
         let (p0, e0) = (w.momentum(), w.kinetic_energy());
-        assert_eq!(exchange_velocities(&mut w, [(0, 1)]), 1);
+        assert_eq!(Response::default().exchange(&mut w, [(0, 1)]), 1);
         assert_eq!(w.velocity[0], -Vec3::X);
         assert_eq!(
-            exchange_velocities(&mut w, [(0, 1)]),
+            Response::default().exchange(&mut w, [(0, 1)]),
             0,
             "now separating: no swap back"
         );

@@ -280,10 +280,7 @@ impl Simulation {
             Some(pool) => pool.install(|| self.step_from(t0, fixation, clock)),
             None => self.step_from(t0, fixation, clock),
         }
-        let Some(ns) = (match self.budget {
-            FrameBudget::Wall(ns) => Some(ns),
-            _ => None,
-        }) else {
+        let FrameBudget::Wall(ns) = self.budget else {
             return &self.report;
         };
         // The frame as its caller sees it ends here (after the pool's hand-back): its lateness

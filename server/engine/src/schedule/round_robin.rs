@@ -41,18 +41,11 @@ impl Scheduler for RoundRobin {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::budget::{Clock, FrameBudget};
+    use crate::budget::{FrameBudget, Manual};
     use crate::config::SceneConfig;
     use crate::narrow_phase::PairStatus;
     use crate::schedule::{Priorities, calibration::Calibration};
     use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
-
-    struct Manual(AtomicU64);
-    impl Clock for Manual {
-        fn now_ns(&self) -> u64 {
-            self.0.load(Relaxed)
-        }
-    }
 
     /// A deadline that passed since the meter last read the clock (its reads are spaced far
     /// from the deadline) stops round robin before it lists a single pair: nothing is stepped,
