@@ -73,7 +73,7 @@ pub mod warm;
 pub mod world;
 
 pub use budget::{Clock, FrameBudget, FrozenClock};
-pub use config::{BudgetSpec, ConfigError, SceneConfig, SchedulerKind, SimConfig};
+pub use config::{BudgetSpec, ConfigError, SceneConfig, SchedulerKind, SimConfig, Truth};
 pub use fixation::Fixation;
 pub use perception::{
     CameraConfig, Display, EccentricityUnit, PerceptualFunction, PerceptualModel,
