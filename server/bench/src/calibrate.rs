@@ -2,14 +2,15 @@
 //! measures how well it is calibrated on seeds it was not fitted on.
 //!
 //! Training runs: N = 500, 2,000 and 10,000, seeds 1-2; held-out runs: the same N, seeds 101-102.
-//! The table (`server/engine/src/schedule/calibration_table.rs`) is written as Rust source; the
+//! The table (`server/engine/src/schedule/calibration_table_shape.rs` for the shape truth,
+//! `calibration_table.rs` for the leaf truth) is written as Rust source; the
 //! reliability report (predicted probability of "not colliding" against the observed frequency, in
 //! ten bins, with the Brier score and the expected calibration error) is written as markdown.
 
 use std::fmt::Write as _;
 
-use foveal_engine::SceneConfig;
 use foveal_engine::schedule::calibration::{Calibration, Observations, ReliabilityRow};
+use foveal_engine::{SceneConfig, Truth};
 
 use crate::error::BenchError;
 
@@ -24,6 +25,8 @@ pub struct CalibrateConfig {
     pub test_seeds: Vec<u64>,
     /// Unrecorded frames first.
     pub warmup: u32,
+    /// The truth the table prices outcomes on (each truth ships its own table).
+    pub truth: Truth,
 }
 
 impl Default for CalibrateConfig {
@@ -33,6 +36,7 @@ impl Default for CalibrateConfig {
             train_seeds: vec![1, 2],
             test_seeds: vec![101, 102],
             warmup: 60,
+            truth: Truth::Shape,
         }
     }
 }
@@ -55,7 +59,13 @@ pub struct CalibrateOutput {
 fn scenes(cfg: &CalibrateConfig, seeds: &[u64]) -> Vec<(SceneConfig, u32)> {
     cfg.scenes
         .iter()
-        .flat_map(|&(n, f)| seeds.iter().map(move |&s| (SceneConfig::paper(n, s), f)))
+        .flat_map(|&(n, f)| {
+            seeds.iter().map(move |&s| {
+                let mut scene = SceneConfig::paper(n, s);
+                scene.truth = cfg.truth;
+                (scene, f)
+            })
+        })
         .collect()
 }
 

@@ -13,6 +13,7 @@
 //! - [`session`]: a recorded server session replayed bit for bit, then open loop under every
 //!   scheduler.
 //! - [`calibrate`]: regenerates the priced scheduler's table and reports its reliability.
+//! - [`contact`]: first contacts under each truth, the gap between the drawn stars measured.
 //! - [`gaze`]: the seeded fixation/saccade script and the recorded-trace reader.
 //! - [`runner`]: the `Instant` clock, one run, the plan, per-frame CSV records.
 //! - [`stats`]: per-run mean/sd, mean and 95% CI across seeds.
@@ -33,6 +34,7 @@
 //! The two parts write separate files, so they can be run separately into one directory.
 
 pub mod calibrate;
+pub mod contact;
 pub mod error;
 pub mod figures;
 pub mod gaze;
@@ -196,6 +198,7 @@ pub fn run_study(cfg: &StudyConfig) -> Result<StudyOutput, BenchError> {
         let ol = open_loop::OpenLoopConfig {
             out: cfg.out.clone(),
             jobs: cfg.jobs.max(1),
+            truth: cfg.truth,
             ..ol.clone()
         };
         // The grid runs on the open-loop part's frames: one exact run, one set of truths.
@@ -206,6 +209,7 @@ pub fn run_study(cfg: &StudyConfig) -> Result<StudyOutput, BenchError> {
             warmup: ol.warmup,
             timing_frames: ol.timing_frames,
             jobs: ol.jobs,
+            truth: ol.truth,
             out: cfg.out.join("grid"),
             ..g.clone()
         });

@@ -42,6 +42,43 @@ enum Command {
     /// Regenerate the priced scheduler's calibration table from exact runs and report its
     /// reliability on held-out seeds.
     Calibrate(CalibrateArgs),
+    /// First contacts under each truth: how far apart the two drawn stars are when the engine
+    /// first calls a pair colliding (exact frames), and the time step's own overlap.
+    Contact(ContactArgs),
+}
+
+#[derive(Debug, Args)]
+struct ContactArgs {
+    /// N = 500, one seed, 120 frames: seconds.
+    #[arg(long)]
+    quick: bool,
+    /// Threads per simulation.
+    #[arg(long, default_value_t = 1)]
+    threads: u32,
+    /// Write contact.md and contact.csv into this directory as well as the table to stdout.
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+fn contact(args: &ContactArgs) -> Result<()> {
+    use foveal_bench::contact as c;
+    let mut cfg = if args.quick {
+        c::ContactConfig::quick()
+    } else {
+        c::ContactConfig::standard()
+    };
+    cfg.threads = args.threads;
+    let rows = c::run(&cfg)?;
+    let md = c::markdown(&cfg, &rows);
+    print!("{md}");
+    if let Some(dir) = &args.out {
+        std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+        for (name, text) in [("contact.md", md.clone()), ("contact.csv", c::csv(&rows))] {
+            let path = dir.join(name);
+            std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
+        }
+    }
+    Ok(())
 }
 
 #[derive(Debug, Args)]
@@ -70,6 +107,10 @@ struct OpenLoopArgs {
     /// wall-clock frames (`SimConfig::fovea_first`).
     #[arg(long)]
     fovea_first: bool,
+    /// What "colliding" means: `shape` (the drawn stars touch; the default) or `leaf-spheres`
+    /// (the paper's leaf-sphere overlap).
+    #[arg(long, default_value = "shape")]
+    truth: foveal_engine::Truth,
     /// Output directory.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -94,6 +135,7 @@ fn open_loop(args: &OpenLoopArgs) -> Result<()> {
             }
         }
     };
+    cfg.truth = args.truth;
     if let Some(n) = &args.n {
         cfg.ns = n.clone();
     }
@@ -191,11 +233,19 @@ struct CalibrateArgs {
     /// Write the reliability report (markdown) here as well as to stdout.
     #[arg(long)]
     report: Option<PathBuf>,
+    /// The truth to calibrate on: `shape` (the default; its table is
+    /// server/engine/src/schedule/calibration_table_shape.rs) or `leaf-spheres` (the paper's;
+    /// calibration_table.rs).
+    #[arg(long, default_value = "shape")]
+    truth: foveal_engine::Truth,
 }
 
 fn calibrate(args: &CalibrateArgs) -> Result<()> {
     use foveal_bench::calibrate as cal;
-    let cfg = cal::CalibrateConfig::default();
+    let cfg = cal::CalibrateConfig {
+        truth: args.truth,
+        ..cal::CalibrateConfig::default()
+    };
     let out = cal::run(&cfg).context("calibration failed")?;
     let md = cal::markdown(&cfg, &out);
     print!("{md}");
@@ -203,9 +253,15 @@ fn calibrate(args: &CalibrateArgs) -> Result<()> {
         std::fs::write(path, &md).with_context(|| format!("writing {}", path.display()))?;
     }
     if let Some(path) = &args.write {
-        let src = out.calibration.to_rust_source(
-            "cargo run --release -p foveal-bench -- calibrate --write server/engine/src/schedule/calibration_table.rs",
-        );
+        let command = match args.truth {
+            foveal_engine::Truth::Shape => {
+                "cargo run --release -p foveal-bench -- calibrate --truth shape --write server/engine/src/schedule/calibration_table_shape.rs"
+            }
+            foveal_engine::Truth::LeafSpheres => {
+                "cargo run --release -p foveal-bench -- calibrate --truth leaf-spheres --write server/engine/src/schedule/calibration_table.rs"
+            }
+        };
+        let src = out.calibration.to_rust_source(command);
         std::fs::write(path, src).with_context(|| format!("writing {}", path.display()))?;
         eprintln!("wrote {}", path.display());
     }
@@ -285,6 +341,10 @@ struct StudyArgs {
     /// Recorded gaze trace (`t_s,xpos,ypos,ps`, 1920x1080 px) instead of the scripted viewer.
     #[arg(long)]
     gaze_csv: Option<PathBuf>,
+    /// What "colliding" means: `shape` (the drawn stars touch; the default) or `leaf-spheres`
+    /// (the paper's leaf-sphere overlap, for the replication).
+    #[arg(long, default_value = "shape")]
+    truth: foveal_engine::Truth,
     /// Output directory.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -321,6 +381,7 @@ impl StudyArgs {
         } else {
             StudyConfig::default()
         };
+        c.truth = self.truth;
         if let Some(n) = &self.n {
             c.ns = n.clone();
         }
@@ -469,6 +530,10 @@ struct ScaleArgs {
     /// its runs: a sitting's drift then reaches every configuration alike.
     #[arg(long, default_value_t = 1)]
     repeat: u32,
+    /// What "colliding" means: `shape` (the drawn stars touch; the default) or `leaf-spheres`
+    /// (the paper's leaf-sphere overlap).
+    #[arg(long, default_value = "shape")]
+    truth: foveal_engine::Truth,
     /// Output directory (scale.csv, scale.md).
     #[arg(long, default_value = foveal_bench::scale::DEFAULT_OUT)]
     out: PathBuf,
@@ -499,6 +564,7 @@ fn scale(args: &ScaleArgs) -> Result<()> {
         seed: args.seed,
         scheduler: args.scheduler,
         fovea_first: args.fovea_first,
+        truth: args.truth,
         repeat: args.repeat,
         out: args.out.clone(),
     };
@@ -524,6 +590,7 @@ fn main() -> Result<()> {
         Command::Scale(args) => scale(args),
         Command::OpenLoop(args) => open_loop(args),
         Command::Calibrate(args) => calibrate(args),
+        Command::Contact(args) => contact(args),
         Command::Replay(args) => replay(&args.file, &args.options),
     }
 }

@@ -32,7 +32,7 @@ use foveal_engine::warm;
 use foveal_engine::{
     BudgetSpec, Clock, EccentricityUnit, Fixation, FrameBudget, FrameReport, FrozenClock,
     PerceptualFunction, PerceptualModel, PhaseProfile, SceneConfig, SchedulerKind, SimConfig,
-    Simulation,
+    Simulation, Truth,
 };
 
 use crate::error::BenchError;
@@ -181,6 +181,8 @@ pub struct OpenLoopConfig {
     /// `SimConfig::fovea_first` for every scheduler (only the priced scheduler's wall-clock
     /// frames take the pass).
     pub fovea_first: bool,
+    /// What "colliding" means in every run (`SceneConfig::truth`).
+    pub truth: Truth,
     /// Output directory.
     pub out: PathBuf,
 }
@@ -320,6 +322,7 @@ impl OpenLoopConfig {
             conditions,
             jobs: 1,
             fovea_first: false,
+            truth: Truth::default(),
             out: PathBuf::from("results/open-loop"),
         }
     }
@@ -519,9 +522,12 @@ impl BaseWindow {
     }
 }
 
-fn sim_config(n: u32, seed: u64, fovea_first: bool) -> SimConfig {
+fn sim_config(n: u32, seed: u64, fovea_first: bool, truth: Truth) -> SimConfig {
     SimConfig {
-        scene: SceneConfig::paper(n, seed),
+        scene: SceneConfig {
+            truth,
+            ..SceneConfig::paper(n, seed)
+        },
         budget: BudgetSpec::Exact,
         scheduler: SchedulerKind::Sequential,
         fovea_first,
@@ -550,7 +556,7 @@ struct ScheduleRun {
 /// Run one (N, seed) of the paper scene, the scripted viewer looking.
 pub fn run_one(cfg: &OpenLoopConfig, n: u32, seed: u64) -> Result<RunResult, BenchError> {
     let mut gaze = ScriptedGaze::new(seed);
-    let scene = sim_config(n, seed, cfg.fovea_first);
+    let scene = sim_config(n, seed, cfg.fovea_first, cfg.truth);
     run_frames(cfg, &scene, seed, &mut |t| gaze.at(t))
 }
 
@@ -562,7 +568,8 @@ fn run_one_parts(
 ) -> Result<Vec<RunResult>, BenchError> {
     let mut gaze = ScriptedGaze::new(seed);
     let fovea_first = parts.first().is_some_and(|p| p.fovea_first);
-    let scene = sim_config(n, seed, fovea_first);
+    let truth = parts.first().map_or(Truth::default(), |p| p.truth);
+    let scene = sim_config(n, seed, fovea_first, truth);
     run_frames_parts(parts, &scene, seed, &mut |t| gaze.at(t))
 }
 

@@ -20,7 +20,7 @@ use crate::open_loop::OpenLoopConfig;
 
 use foveal_engine::{
     BudgetSpec, EccentricityUnit, PerceptualFunction, PerceptualModel, SceneConfig, SchedulerKind,
-    SimConfig,
+    SimConfig, Truth,
 };
 
 /// The paper's body counts (section 4).
@@ -226,6 +226,8 @@ pub struct StudyConfig {
     pub frame_csv: bool,
     /// Show a progress bar (only drawn when stderr is a terminal).
     pub progress: bool,
+    /// What "colliding" means in every run, the open-loop parts included (`SceneConfig::truth`).
+    pub truth: Truth,
 }
 
 impl Default for StudyConfig {
@@ -253,6 +255,7 @@ impl Default for StudyConfig {
             out: PathBuf::from("target/foveal-bench/study"),
             frame_csv: true,
             progress: true,
+            truth: Truth::default(),
         }
     }
 }
@@ -292,7 +295,10 @@ impl StudyConfig {
     /// Engine config for one run.
     pub fn sim_config(&self, spec: &RunSpec, exact_cost: f64) -> SimConfig {
         SimConfig {
-            scene: SceneConfig::paper(spec.n, spec.seed),
+            scene: SceneConfig {
+                truth: self.truth,
+                ..SceneConfig::paper(spec.n, spec.seed)
+            },
             budget: spec.mode.budget(exact_cost),
             scheduler: spec.scheduler,
             eccentricity_threshold_deg: self.threshold_deg,

@@ -23,7 +23,7 @@ use std::time::Instant;
 use foveal_engine::broad_phase::BroadPhaseKind;
 use foveal_engine::{
     BudgetSpec, ConfigError, Fixation, PhaseProfile, SceneConfig, SchedulerKind, SimConfig,
-    Simulation,
+    Simulation, Truth,
 };
 use serde::{Deserialize, Serialize};
 
@@ -162,6 +162,9 @@ pub struct RunSpec {
     /// `SimConfig::fovea_first`.
     #[serde(default)]
     pub fovea_first: bool,
+    /// What "colliding" means (`SceneConfig::truth`).
+    #[serde(default)]
+    pub truth: Truth,
     /// Scene seed.
     pub seed: u64,
     /// Uncounted frames before the measured ones.
@@ -274,6 +277,8 @@ pub struct ScaleConfig {
     pub scheduler: SchedulerKind,
     /// `SimConfig::fovea_first` in every run.
     pub fovea_first: bool,
+    /// The truth of every run.
+    pub truth: Truth,
     /// Rounds: the whole plan is run this many times, one round after another (1..=[`MAX_REPEAT`]).
     pub repeat: u32,
     /// Output directory.
@@ -296,6 +301,7 @@ impl Default for ScaleConfig {
             seed: 1,
             scheduler: SimConfig::default().scheduler,
             fovea_first: false,
+            truth: Truth::default(),
             repeat: 1,
             out: PathBuf::from(DEFAULT_OUT),
         }
@@ -414,6 +420,7 @@ impl ScaleConfig {
                     mode,
                     scheduler: self.scheduler,
                     fovea_first: self.fovea_first,
+                    truth: self.truth,
                     seed: self.seed,
                     warmup,
                     frames,
@@ -434,7 +441,10 @@ impl ScaleConfig {
 /// The engine configuration of a run.
 fn sim_config(spec: &RunSpec) -> SimConfig {
     SimConfig {
-        scene: SceneConfig::paper(spec.n, spec.seed),
+        scene: SceneConfig {
+            truth: spec.truth,
+            ..SceneConfig::paper(spec.n, spec.seed)
+        },
         budget: spec.mode.budget(),
         scheduler: spec.scheduler,
         fovea_first: spec.fovea_first,
@@ -998,7 +1008,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "Paper scene (seed {}), scheduler {}{}, fixation at the screen centre, wall clock. Whole step = \
+        "Paper scene (seed {}, truth {}), scheduler {}{}, fixation at the screen centre, wall clock. Whole step = \
          `Instant` around `Simulation::step` (p99 nearest rank: the maximum below 100 frames); \
          phase shares = phase totals from `FrameReport.profile` over total step time; foveal exact = \
          frames in which no pair within 5° of the fixation was deemed and every region that may hold \
@@ -1008,6 +1018,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
          and the sweep-and-prune broad phase (the engine before threads and the grid; its other \
          phases are today's).\n",
         out.results.first().map_or(1, |r| r.spec.seed),
+        out.results.first().map_or("-", |r| r.spec.truth.name()),
         out.results.first().map_or("-", |r| r.spec.scheduler.name()),
         if out.results.first().is_some_and(|r| r.spec.fovea_first) {
             " (fovea first)"
@@ -1376,6 +1387,7 @@ mod tests {
             mode: Mode::BudgetMs(4.0),
             scheduler: SchedulerKind::Priced,
             fovea_first: false,
+            truth: Truth::Shape,
             seed: 3,
             warmup: 2,
             frames: 7,

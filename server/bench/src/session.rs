@@ -251,6 +251,7 @@ fn open_loop_segment(
         ],
         jobs: 1,
         fovea_first: c.fovea_first,
+        truth: c.scene.truth,
         out: std::path::PathBuf::new(),
     };
     // Frame k of the exact run (simulated time (k + 1) dt at its end; its start is k dt) is

@@ -13,9 +13,10 @@
 //! witness re-test only ever *adds* a test to a pair that does not collide, so the bound stays a
 //! lower bound.
 
+use crate::config::Truth;
 use crate::fixation::FrameView;
 use crate::math::Vec3;
-use crate::narrow_phase::{NarrowPhase, StepOutcome, separation};
+use crate::narrow_phase::{NarrowPhase, StepOutcome, separation, shape_separation};
 use crate::sphere_tree::SphereTree;
 use crate::world::World;
 
@@ -63,6 +64,9 @@ pub fn truths(
         let (a, b) = (a as usize, b as usize);
         let (sep, gap_ends) = if colliding {
             (0.0, [world.position[a]; 2])
+        } else if tree.truth() == Truth::Shape {
+            let (sep, ga, gb) = shape_separation(tree, world, a, b);
+            (sep.max(0.0), [ga, gb])
         } else {
             let (sep, ca, cb) = separation(tree, world, a, b, &mut stack);
             let sep = sep.max(0.0);

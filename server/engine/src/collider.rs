@@ -9,10 +9,10 @@
 //! witnesses and its buffers).
 
 use crate::budget::{Clock, FrameBudget, Meter};
-use crate::config::SimConfig;
+use crate::config::{SimConfig, Truth};
 use crate::fixation::{Fixation, FrameView};
 use crate::metrics::{self, Fovea};
-use crate::narrow_phase::{NarrowPhase, PairState, PairStatus, separation};
+use crate::narrow_phase::{NarrowPhase, PairState, PairStatus, separation, shape_separation};
 use crate::perception::Viewer;
 use crate::report::{AuditReport, FOVEAL_DEG, FrameReport, PhaseProfile};
 use crate::schedule::calibration::Calibration;
@@ -247,6 +247,30 @@ impl Collider {
                 .map(|p| (p.a, p.b))
         });
         let listed = listed.map(|l| l.map(|i| (pairs[i].a, pairs[i].b)));
+        listed
+            .into_iter()
+            .flatten()
+            .chain(scanned.into_iter().flatten())
+    }
+
+    /// [`Self::collisions`], each pair with whether it is a real collision (settled colliding)
+    /// rather than deemed at interruption: the shape truth's response needs a contact for the
+    /// real ones.
+    pub fn collisions_settled(&self) -> impl Iterator<Item = (u32, u32, bool)> + '_ {
+        let pairs = &self.narrow.pairs;
+        let listed = self.narrow.colliding();
+        let scanned = listed.is_none().then(|| {
+            pairs
+                .iter()
+                .filter(|p| p.status.is_collision())
+                .map(|p| (p.a, p.b, p.status == PairStatus::Colliding))
+        });
+        let listed = listed.map(|l| {
+            l.map(|i| {
+                let p = &pairs[i];
+                (p.a, p.b, p.status == PairStatus::Colliding)
+            })
+        });
         listed
             .into_iter()
             .flatten()
@@ -840,7 +864,8 @@ fn audit(
 }
 
 /// The truth of a pair: None if it collides, else its separation and the perceived error of that
-/// true gap (0 without a view), the two closest leaf spheres' facing points taken as the gap.
+/// true gap (0 without a view). Under the leaf truth the gap runs between the two closest leaf
+/// spheres' facing points; under the shape truth between the two stars' closest points.
 pub fn true_weight(
     tree: &SphereTree,
     world: &World,
@@ -849,6 +874,17 @@ pub fn true_weight(
     view: Option<&FrameView<'_>>,
     stack: &mut Vec<(f32, u16, u16, u8, u8)>,
 ) -> Option<(f64, f64)> {
+    if tree.truth() == Truth::Shape {
+        // On the shape the gap's two ends are the stars' closest points.
+        let (sep, gap_a, gap_b) = shape_separation(tree, world, a, b);
+        if sep <= 0.0 {
+            return None;
+        }
+        let w = view.map_or(0.0, |v| {
+            v.weight_points(gap_a, gap_b, (gap_a + gap_b) * 0.5)
+        });
+        return Some((sep, w));
+    }
     let (sep, ca, cb) = separation(tree, world, a, b, stack);
     if sep <= 0.0 {
         return None;

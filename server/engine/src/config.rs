@@ -99,9 +99,8 @@ impl std::str::FromStr for Truth {
     type Err = ConfigError;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Self::from_name(s).ok_or_else(|| {
-            ConfigError::new("scene.truth", s, "must be `shape` or `leaf-spheres`")
-        })
+        Self::from_name(s)
+            .ok_or_else(|| ConfigError::new("scene.truth", s, "must be `shape` or `leaf-spheres`"))
     }
 }
 

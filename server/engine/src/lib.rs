@@ -68,6 +68,7 @@ pub mod shedding;
 pub mod simulation;
 pub mod soak;
 pub mod sphere_tree;
+pub mod star_contact;
 pub mod validate;
 pub mod warm;
 pub mod world;

@@ -18,8 +18,10 @@ use glam::Vec4;
 #[cfg(target_arch = "x86_64")]
 use pulp::x86::V3;
 
+use crate::config::Truth;
 use crate::math::{LMat3, LVec3, Vec3};
 use crate::sphere_tree::{LANES, SphereTree};
+use crate::star_contact::{Contact, Pose};
 use crate::world::World;
 
 /// Fewest pairs for which [`NarrowPhase::resolve_all`] splits the work over threads: handing
@@ -1212,7 +1214,7 @@ impl Lane<'_> {
                 if spheres_overlap(la, frame.map(lb), lb.w) {
                     st.last = w.leaves;
                     st.levels = [depth, depth];
-                    return resolve(st, PairStatus::Colliding, depth);
+                    return leaves_overlap(st, tree);
                 }
             } else {
                 *self.tests += 1;
@@ -1232,13 +1234,16 @@ impl Lane<'_> {
             st.last = [0, 0];
             st.levels = [1, 1];
             if depth == 1 {
-                return resolve(st, PairStatus::Colliding, 1);
+                return leaves_overlap(st, tree);
             }
             st.status = PairStatus::Active;
             st.list_start = self.arena.len() as u32;
             st.list_len = 1;
             self.arena.push([0, 0]);
             return StepOutcome::Active;
+        }
+        if shape_pending(&p, depth) {
+            return shape_step(&mut self.pairs[i], self.tests, tree, world);
         }
         // A to its leaves against B's root first, then B (see `next_levels`).
         let (descend_a, new_levels) = next_levels(p.levels, depth);
@@ -1258,7 +1263,7 @@ impl Lane<'_> {
         if at_leaves && found > 0 {
             st.last = self.arena[start];
             self.arena.truncate(start);
-            return resolve(st, PairStatus::Colliding, level);
+            return leaves_overlap(st, tree);
         }
         if found == 0 {
             return resolve(st, PairStatus::Separate, level);
@@ -1287,6 +1292,9 @@ impl Lane<'_> {
         }
         let depth = tree.depth() as u8;
         let p = self.pairs[i];
+        if shape_pending(&p, depth) {
+            return shape_step(&mut self.pairs[i], self.tests, tree, world);
+        }
         let frame = self.frames[self.frame_slot(i)];
         let [cur, next] = &mut *self.scratch;
         let (lo, hi) = (p.list_start as usize, (p.list_start + p.list_len) as usize);
@@ -1334,6 +1342,9 @@ impl Lane<'_> {
             let st = &mut self.pairs[i];
             st.levels = levels;
             st.last = last;
+            if status == PairStatus::Colliding && tree.truth() == Truth::Shape {
+                return shape_step(st, self.tests, tree, world);
+            }
             return resolve(st, status, level);
         }
     }
@@ -1672,6 +1683,77 @@ const KEPT_EIGHT: [[u32; 8]; 256] = {
     table
 };
 
+/// Sphere tests a pair's shape test counts for in the frame's test count and in sphere-test
+/// budgets: its cost in time against one sphere test of the descent's kernels, measured by
+/// `cargo bench -p foveal-engine --bench step -- shape` (docs/BENCHMARKS.md "Shape truth").
+pub const SHAPE_TEST_COST: u64 = 16;
+
+/// A pair's leaves overlap: under the leaf truth it collides; under the shape truth it waits for
+/// its shape test, one more interruptible level (a pair deemed here is deemed colliding).
+#[inline]
+fn leaves_overlap(st: &mut PairState, tree: &SphereTree) -> StepOutcome {
+    let depth = tree.depth() as u8;
+    if tree.truth() == Truth::LeafSpheres {
+        return resolve(st, PairStatus::Colliding, depth);
+    }
+    st.status = PairStatus::Active;
+    st.list_len = 0;
+    StepOutcome::Active
+}
+
+/// Whether pair `p` is open with its leaves overlapping and its shape test still to run: the
+/// only open state at both trees' leaves (a descent that reaches them settles the pair or hands
+/// it here).
+#[inline]
+fn shape_pending(p: &PairState, depth: u8) -> bool {
+    p.status == PairStatus::Active && p.levels == [depth, depth]
+}
+
+/// The shape level: test the two stars themselves (docs/DESIGN.md "Exact answer").
+#[inline(never)]
+fn shape_step(
+    st: &mut PairState,
+    tests: &mut u64,
+    tree: &SphereTree,
+    world: &World,
+) -> StepOutcome {
+    *tests += SHAPE_TEST_COST;
+    let pose = shape_pose(world, st.a as usize, st.b as usize);
+    let status = if tree.geometry().intersects(&pose) {
+        PairStatus::Colliding
+    } else {
+        PairStatus::Separate
+    };
+    resolve(st, status, tree.depth() as u8)
+}
+
+/// Body `b`'s pose in body `a`'s frame, in f64 from the bodies' orientations and positions: the
+/// shape level decides touching at a tolerance of 1e-9 R, beyond the f32 frames of the descent.
+pub fn shape_pose(world: &World, a: usize, b: usize) -> Pose {
+    let qa = world.orientation[a].conjugate();
+    Pose {
+        rotation: glam::DMat3::from_quat(qa * world.orientation[b]),
+        translation: qa * (world.position[b] - world.position[a]),
+    }
+}
+
+/// The truth on the shape for bodies `a` and `b`: their signed distance (the gap, or minus the
+/// penetration depth) and the two facing points of the gap in world coordinates (both the
+/// contact point when they touch).
+pub fn shape_separation(tree: &SphereTree, world: &World, a: usize, b: usize) -> (f64, Vec3, Vec3) {
+    let c = tree.geometry().contact(&shape_pose(world, a, b));
+    let (pa, qa) = (world.position[a], world.orientation[a]);
+    let to_world = |p: Vec3| pa + qa * p;
+    match c {
+        Contact::Touching { point, depth, .. } => (-depth, to_world(point), to_world(point)),
+        Contact::Apart {
+            distance,
+            point_a,
+            point_b,
+        } => (distance, to_world(point_a), to_world(point_b)),
+    }
+}
+
 fn resolve(st: &mut PairState, status: PairStatus, level: u8) -> StepOutcome {
     st.status = status;
     st.resolved_level = level;
@@ -1685,14 +1767,19 @@ fn resolve(st: &mut PairState, status: PairStatus, level: u8) -> StepOutcome {
 
 /// The exact answer by brute force: whether any leaf sphere of `a` overlaps any leaf sphere of `b`
 /// (DESIGN.md "Exact answer"), with the same kernel and the same relative frame as the traversal.
+/// Under the shape truth, the leaves' answer and then the stars' own test.
 pub fn brute_force_colliding(tree: &SphereTree, world: &World, a: usize, b: usize) -> bool {
     let f = PairFrame::new(world, a, b);
-    tree.leaves().any(|j| {
+    let leaves = tree.leaves().any(|j| {
         let sb = tree.sphere(j);
         let cb = f.map(sb);
         tree.leaves()
             .any(|i| spheres_overlap(tree.sphere(i), cb, sb.w))
-    })
+    });
+    match tree.truth() {
+        Truth::LeafSpheres => leaves,
+        Truth::Shape => leaves && tree.geometry().intersects(&shape_pose(world, a, b)),
+    }
 }
 
 /// True separation of two bodies' leaf-sphere sets: the smallest `|ca - cb| - ra - rb` over leaf

@@ -4,7 +4,10 @@
 //! already separating keeps its velocities, so an overlap that persists for a few frames does not
 //! make the bodies swap back and forth (jitter, sticking).
 
+use crate::math::Vec3;
+use crate::narrow_phase::shape_pose;
 use crate::prefetch::Prefetcher;
+use crate::sphere_tree::SphereTree;
 use crate::world::World;
 
 /// Pairs ahead of the one exchanged whose bodies' state is asked of the memory meanwhile.
@@ -48,6 +51,42 @@ impl Response {
     }
 }
 
+impl Response {
+    /// The shape truth's response: each approaching pair on the collision list, in order,
+    /// exchanges its velocity components along a normal: for a real collision (`true`) the
+    /// stars' contact normal ([`crate::star_contact`]), for a pair deemed at interruption (no
+    /// contact was found) the centre line. Returns how many exchanged.
+    ///
+    /// With equal masses this is the elastic response along the normal: momentum and kinetic
+    /// energy are kept exactly (up to rounding), and the tangential motion is left alone, so a
+    /// glancing touch between two spikes deflects the bodies instead of swapping their paths.
+    pub fn exchange_on_shape(
+        &mut self,
+        world: &mut World,
+        tree: &SphereTree,
+        pairs: impl IntoIterator<Item = (u32, u32, bool)>,
+    ) -> u32 {
+        let mut n = 0;
+        for (a, b, real) in pairs {
+            let (a, b) = (a as usize, b as usize);
+            let normal = if real {
+                let c = tree.geometry().contact(&shape_pose(world, a, b));
+                world.orientation[a] * c.normal()
+            } else {
+                (world.position[b] - world.position[a]).normalize_or(Vec3::X)
+            };
+            let approach = (world.velocity[b] - world.velocity[a]).dot(normal);
+            if approach < 0.0 {
+                let dv = normal * approach;
+                world.velocity[a] += dv;
+                world.velocity[b] -= dv;
+                n += 1;
+            }
+        }
+        n
+    }
+}
+
 /// Pairs' worth of storage a [`Response`] keeps however few the last frame had.
 const KEEP: usize = 4096;
 
@@ -76,7 +115,6 @@ fn exchange_listed(world: &mut World, pairs: &[(u32, u32)]) -> u32 {
 mod tests {
     use super::*;
     use crate::config::SceneConfig;
-    use crate::math::Vec3;
 
     /// The look-ahead changes what is read early, not the order of the exchanges: over many
     /// pairs sharing bodies (a body on several approaching pairs takes each exchange in turn),

@@ -7,7 +7,7 @@
 use crate::broad_phase::BroadPhase;
 use crate::budget::{Clock, FrameBudget, FrozenClock};
 use crate::collider::{Collider, FrameInput};
-use crate::config::{BudgetSpec, ConfigError, SimConfig};
+use crate::config::{BudgetSpec, ConfigError, SimConfig, Truth};
 use crate::fixation::Fixation;
 use crate::guard::{GUARD_SETTLE_S, Guard};
 use crate::narrow_phase::{NarrowPhase, PairState};
@@ -72,7 +72,8 @@ impl Simulation {
     pub fn new(config: SimConfig) -> Result<Self, ConfigError> {
         config.validate()?;
         let sc = &config.scene;
-        let tree = SphereTree::build(Star::new(sc.shape_radius), sc.depth as usize)?;
+        let tree =
+            SphereTree::build(Star::new(sc.shape_radius), sc.depth as usize)?.with_truth(sc.truth);
         let world = World::generate(sc);
         let side = sc.volume_side();
         let mut broad = BroadPhase::with_kind(
@@ -540,9 +541,21 @@ impl Simulation {
     }
 
     /// Phase: exchange the velocities of approaching pairs on the collision list (real and deemed).
+    ///
+    /// Under the leaf truth the paper's exchange (whole velocities, along the centre line);
+    /// under the shape truth the velocity components along the stars' contact normal, so that
+    /// bodies bounce where they visibly touch.
     fn respond(&mut self) -> u32 {
-        self.response
-            .exchange(&mut self.world, self.collider.collisions())
+        match self.config.scene.truth {
+            Truth::LeafSpheres => self
+                .response
+                .exchange(&mut self.world, self.collider.collisions()),
+            Truth::Shape => self.response.exchange_on_shape(
+                &mut self.world,
+                &self.tree,
+                self.collider.collisions_settled(),
+            ),
+        }
     }
 
     /// Exact colliding pairs among the current candidates (each resolved to completion).

@@ -15,9 +15,10 @@
 use glam::Vec4;
 use serde::Serialize;
 
-use crate::config::MAX_DEPTH;
+use crate::config::{MAX_DEPTH, Truth};
 use crate::math::{LVec3, Vec3};
 use crate::shape::Star;
+use crate::star_contact::StarGeometry;
 use crate::validate::ConfigError;
 
 /// Flat, level-ordered sphere tree.
@@ -35,6 +36,10 @@ pub struct SphereTree {
     kids: Vec<Kids>,
     depth: usize,
     shape: Star,
+    /// What a leaf overlap means: a collision (the paper), or a reason to test the stars.
+    truth: Truth,
+    /// The star's dimensions for the shape level ([`Truth::Shape`]).
+    geometry: StarGeometry,
 }
 
 /// Spheres per vector in a [`Kids`] block.
@@ -203,7 +208,29 @@ impl SphereTree {
             kids,
             depth,
             shape,
+            truth: Truth::LeafSpheres,
+            geometry: StarGeometry::new(shape),
         })
+    }
+
+    /// The tree with a truth: under [`Truth::Shape`] a pair whose leaves overlap is then tested
+    /// on the stars ([`crate::star_contact`]) before it is called colliding. A tree is built with
+    /// the paper's [`Truth::LeafSpheres`].
+    pub fn with_truth(mut self, truth: Truth) -> Self {
+        self.truth = truth;
+        self
+    }
+
+    /// What "colliding" means for pairs traversed with this tree.
+    #[inline]
+    pub fn truth(&self) -> Truth {
+        self.truth
+    }
+
+    /// The star's geometry for the shape level.
+    #[inline]
+    pub fn geometry(&self) -> &StarGeometry {
+        &self.geometry
     }
 
     /// Sphere `i`: centre in xyz, radius in w.

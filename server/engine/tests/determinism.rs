@@ -1,7 +1,9 @@
 //! Same config, seed, gaze sequence and work budget give bit-identical frame reports.
 
 use foveal_engine::report::Fnv1a;
-use foveal_engine::{BudgetSpec, Fixation, FrozenClock, SchedulerKind, SimConfig, Simulation};
+use foveal_engine::{
+    BudgetSpec, Fixation, FrozenClock, SchedulerKind, SimConfig, Simulation, Truth,
+};
 
 /// A fixed gaze path: fixations that jump every 20 frames, with one unusable sample and one gap.
 fn gaze(frame: u64) -> Option<Fixation> {
@@ -19,7 +21,12 @@ fn gaze(frame: u64) -> Option<Fixation> {
 }
 
 fn run(frames: u64, kind: SchedulerKind) -> u64 {
+    run_on(frames, kind, Truth::LeafSpheres)
+}
+
+fn run_on(frames: u64, kind: SchedulerKind, truth: Truth) -> u64 {
     let mut cfg = SimConfig::default();
+    cfg.scene.truth = truth;
     cfg.scene.bodies = 300;
     cfg.scene.seed = 2024;
     cfg.scheduler = kind;
@@ -40,12 +47,15 @@ fn run(frames: u64, kind: SchedulerKind) -> u64 {
 
 #[test]
 fn two_runs_are_bit_identical_for_every_scheduler() {
-    for kind in SchedulerKind::ALL {
-        assert_eq!(run(150, kind), run(150, kind), "{kind:?}");
+    for truth in Truth::ALL {
+        for kind in SchedulerKind::ALL {
+            let once = run_on(150, kind, truth);
+            assert_eq!(once, run_on(150, kind, truth), "{kind:?} {truth}");
+        }
     }
 }
 
-/// Golden hash over 1,000 frames. It pins the scene generator, integrator, broad phase, traversal,
+/// Golden hash over 1,000 frames under the paper's leaf-sphere truth. It pins the scene generator, integrator, broad phase, traversal,
 /// scheduler, response and metrics together; any change to their arithmetic or order changes it.
 /// Floating-point results are platform-independent here except through libm's sin/cos, so the value
 /// is for x86_64 Linux; elsewhere only the two-runs test above applies.
@@ -57,6 +67,17 @@ fn golden_hash_over_1000_frames() {
 }
 
 const GOLDEN: u64 = 0x7904_a867_ee1c_c15b;
+
+/// The same 1,000 frames under the shape truth (the default): the shape level and the response
+/// along the stars' contact normal pinned with the rest.
+#[test]
+#[cfg(all(target_arch = "x86_64", target_os = "linux"))]
+fn golden_hash_over_1000_frames_on_the_shape() {
+    let got = run_on(1000, SchedulerKind::PriorityOnly, Truth::Shape);
+    assert_eq!(got, GOLDEN_SHAPE, "frame sequence changed: {got:#018x}");
+}
+
+const GOLDEN_SHAPE: u64 = 0x9446_8b47_3197_002c;
 
 /// Frame reports over a few frames at a size where integration, the exact narrow phase and the
 /// metrics split over threads: identical bits for 1 and 2 threads, exact and under a sphere-test

@@ -3,9 +3,10 @@
 
 use std::collections::BTreeSet;
 
-use foveal_engine::narrow_phase::PairStatus;
+use foveal_engine::math::Vec3;
+use foveal_engine::narrow_phase::{PairStatus, brute_force_colliding, shape_separation};
 use foveal_engine::soak::{SoakLimits, soak};
-use foveal_engine::{BudgetSpec, FrozenClock, SchedulerKind, SimConfig, Simulation};
+use foveal_engine::{BudgetSpec, FrozenClock, SchedulerKind, SimConfig, Simulation, Truth};
 
 fn exact(n: u32) -> SimConfig {
     let mut cfg = SimConfig::default();
@@ -37,11 +38,18 @@ fn trace(cfg: SimConfig, frames: usize) -> Vec<(PairSet, PairSet)> {
         .collect()
 }
 
+/// Under the paper's leaf truth the whole run is bit-identical however far it is moved: the
+/// response swaps velocities (no arithmetic) and every test is relative to the pair in f32.
 #[test]
 fn translated_scene_gives_the_same_collision_sets() {
-    let base = trace(exact(400), 120);
+    let leaf = |n| {
+        let mut cfg = exact(n);
+        cfg.scene.truth = Truth::LeafSpheres;
+        cfg
+    };
+    let base = trace(leaf(400), 120);
     for offset in [1e3, 1e5, 1e7, -1e7] {
-        let mut cfg = exact(400);
+        let mut cfg = leaf(400);
         cfg.scene.origin = [offset, -offset, 0.5 * offset];
         let moved = trace(cfg, 120);
         for (f, (a, b)) in base.iter().zip(&moved).enumerate() {
@@ -55,6 +63,44 @@ fn translated_scene_gives_the_same_collision_sets() {
             );
         }
     }
+}
+
+/// Under the shape truth the response exchanges velocity along a computed normal, whose last
+/// bits depend on where the pair is, so two runs moved apart drift apart like any chaotic system
+/// (a pair approaching at 1e-12 units/s exchanges in one and not the other). The answer for a
+/// given state does not drift: every frame of a run, moved by up to 1e7 units, gives every
+/// candidate pair the same answer, except pairs within 1e-6 R of touching, where the moved
+/// positions' own rounding (about 1e-9 units at 1e7) may decide.
+#[test]
+fn translated_states_give_the_same_shape_answers() {
+    let mut sim = Simulation::new(exact(400)).expect("valid");
+    let r = sim.config().scene.shape_radius;
+    let mut checked = (0, 0);
+    for _ in 0..60 {
+        sim.step(None, &FrozenClock);
+        let (tree, world) = (sim.tree(), sim.world());
+        for offset in [1e3, 1e7, -1e7] {
+            let mut moved = world.clone();
+            for p in &mut moved.position {
+                *p += Vec3::new(offset, -offset, 0.5 * offset);
+            }
+            for &(a, b) in sim.candidate_pairs() {
+                let (a, b) = (a as usize, b as usize);
+                let here = brute_force_colliding(tree, world, a, b);
+                let there = brute_force_colliding(tree, &moved, a, b);
+                if here != there {
+                    let gap = shape_separation(tree, world, a, b).0;
+                    assert!(
+                        gap.abs() < 1e-6 * r,
+                        "offset {offset}: ({a}, {b}) gap {gap}"
+                    );
+                    checked.1 += 1;
+                }
+                checked.0 += usize::from(here);
+            }
+        }
+    }
+    assert!(checked.0 > 100, "{checked:?}");
 }
 
 #[test]
@@ -115,14 +161,17 @@ fn tiny_and_degenerate_scenes_run() {
 #[test]
 fn extreme_speeds_and_time_steps_keep_every_invariant() {
     let limits = SoakLimits::default();
-    for (speed, dt, frames) in [
-        (1e6, 1.0 / 60.0, 50),
-        (1.0, 1e-5, 300),
-        (1.0, 0.1, 300),
-        (0.0, 1.0 / 60.0, 20),
+    for (speed, dt, frames, truth) in [
+        (1e6, 1.0 / 60.0, 50, Truth::Shape),
+        (1.0, 1e-5, 300, Truth::Shape),
+        (1.0, 1.0 / 60.0, 300, Truth::Shape),
+        (1.0, 0.1, 300, Truth::Shape),
+        (1.0, 0.1, 300, Truth::LeafSpheres),
+        (0.0, 1.0 / 60.0, 20, Truth::Shape),
     ] {
         let mut cfg = exact(150);
         (cfg.scene.min_speed, cfg.scene.max_speed, cfg.scene.dt) = (speed, speed, dt);
+        cfg.scene.truth = truth;
         let r = soak(&cfg, frames, limits, |_| {}).expect("valid");
         assert_eq!(r.non_finite_frames, 0, "speed {speed}, dt {dt}: {r:?}");
         assert!(
@@ -134,8 +183,13 @@ fn extreme_speeds_and_time_steps_keep_every_invariant() {
             r.max_energy_drift <= 1e-9 && r.max_momentum_drift <= 1e-9,
             "{r:?}"
         );
-        if speed <= 1.0 {
-            assert_eq!(r.tunnelled, 0, "{r:?}");
+        // No pair's cores pass through each other unseen at the scene's speeds, except under
+        // the shape truth at a step six times the canonical one: the stars are found only when
+        // they touch, up to 0.36R later than their leaf spheres, and a step of 0.1 s moves a
+        // pair up to 0.2 units (a whole core diameter and more); that is the time step's own
+        // tunnelling, which the leaf spheres' margin hid.
+        if speed <= 1.0 && (truth == Truth::LeafSpheres || dt <= 1.0 / 60.0) {
+            assert_eq!(r.tunnelled, 0, "{truth}, dt {dt}: {r:?}");
         }
     }
 }

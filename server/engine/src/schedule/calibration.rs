@@ -23,8 +23,8 @@
 
 use serde::Serialize;
 
-use crate::config::SceneConfig;
-use crate::narrow_phase::{NarrowPhase, StepOutcome, separation};
+use crate::config::{SceneConfig, Truth};
+use crate::narrow_phase::{NarrowPhase, StepOutcome, separation, shape_separation};
 use crate::shape::Star;
 use crate::sphere_tree::SphereTree;
 use crate::validate::ConfigError;
@@ -229,7 +229,7 @@ impl Calibration {
     /// The shipped table for the paper's depth, or a table calibrated now for another depth.
     pub fn for_tree(tree: &SphereTree, scene: &SceneConfig) -> Result<Self, ConfigError> {
         let depth = tree.depth() as u8;
-        if let Some(shipped) = Self::shipped().filter(|c| c.depth == depth) {
+        if let Some(shipped) = Self::shipped_for(tree.truth()).filter(|c| c.depth == depth) {
             return Ok(shipped);
         }
         // A small copy of the paper scene at this depth: a few hundred thousand state visits,
@@ -237,6 +237,7 @@ impl Calibration {
         let mut small = SceneConfig::paper(1_000, 1);
         small.depth = scene.depth;
         small.shape_radius = scene.shape_radius;
+        small.truth = tree.truth();
         Ok(Observations::record(&[small], 30, 10)?.calibration())
     }
 
@@ -258,8 +259,23 @@ impl Calibration {
 
     /// The table shipped with the engine, for the depth it was calibrated at (the paper's, 4).
     pub fn shipped() -> Option<Self> {
-        let t = super::calibration_table::BINS;
-        let depth = super::calibration_table::DEPTH;
+        Self::shipped_for(Truth::Shape)
+    }
+
+    /// The table shipped for `truth`: the outcomes a state predicts differ between the truths
+    /// (under the shape truth most pairs whose leaves overlap are apart, and a contact rarely
+    /// lasts a frame), so each truth has its own, calibrated on the same scenes.
+    pub fn shipped_for(truth: Truth) -> Option<Self> {
+        let (t, depth) = match truth {
+            Truth::LeafSpheres => (
+                super::calibration_table::BINS,
+                super::calibration_table::DEPTH,
+            ),
+            Truth::Shape => (
+                super::calibration_table_shape::BINS,
+                super::calibration_table_shape::DEPTH,
+            ),
+        };
         (t.len() == stages(depth) * LIST_BUCKETS * DIST_BUCKETS).then(|| Self {
             depth,
             bins: t
@@ -300,7 +316,8 @@ impl Calibration {
         index_bucket(0, initial_key(witness, remembered), bucket)
     }
 
-    /// The table as Rust source for `schedule/calibration_table.rs`.
+    /// The table as Rust source for `schedule/calibration_table.rs` (the leaf truth's) or
+    /// `schedule/calibration_table_shape.rs` (the shape truth's).
     pub fn to_rust_source(&self, command: &str) -> String {
         use std::fmt::Write as _;
         let mut s = format!(
@@ -414,7 +431,8 @@ impl Observations {
                 ..SimConfig::default()
             };
             let mut sim = Simulation::new(cfg)?;
-            let tree = SphereTree::build(Star::new(scene.shape_radius), scene.depth as usize)?;
+            let tree = SphereTree::build(Star::new(scene.shape_radius), scene.depth as usize)?
+                .with_truth(scene.truth);
             let inv_diameter = (0.5 / tree.root_radius()) as f32;
             let inv_r = 1.0 / scene.shape_radius;
             let mut np = NarrowPhase::default();
@@ -436,7 +454,9 @@ impl Observations {
                     visits.clear();
                     let memory = remembered.get(&(a, b)).copied().unwrap_or(0);
                     let outcome = loop {
-                        let stage = np.pairs[i].stage();
+                        // Under the shape truth, a pair waiting for its shape test shares the
+                        // last stage's bins (the leaves' step, whose outcome it completes).
+                        let stage = np.pairs[i].stage().min(stages(depth) as u8 - 1);
                         let key = if stage == 0 {
                             initial_key(np.has_witness(i), memory)
                         } else {
@@ -456,7 +476,11 @@ impl Observations {
                         continue;
                     }
                     let gap = if separate {
-                        separation(&tree, world, a, b, &mut stack).0.max(0.0) * inv_r
+                        let sep = match tree.truth() {
+                            Truth::LeafSpheres => separation(&tree, world, a, b, &mut stack).0,
+                            Truth::Shape => shape_separation(&tree, world, a, b).0,
+                        };
+                        sep.max(0.0) * inv_r
                     } else {
                         0.0
                     };
@@ -624,7 +648,11 @@ mod tests {
 
     #[test]
     fn states_predict_what_follows_them_and_the_table_is_dense() {
-        let scene = SceneConfig::paper(400, 3);
+        // The paper's truth: there a contact lasts several frames, so a witness predicts one.
+        let scene = SceneConfig {
+            truth: Truth::LeafSpheres,
+            ..SceneConfig::paper(400, 3)
+        };
         let obs = Observations::record(&[scene], 20, 5).expect("valid");
         let cal = obs.calibration();
         assert_eq!(cal.bins().len(), 7 * LIST_BUCKETS * DIST_BUCKETS);

@@ -6,6 +6,7 @@
 
 pub mod calibration;
 mod calibration_table;
+mod calibration_table_shape;
 mod expected_gain;
 pub mod priced;
 pub mod priority;

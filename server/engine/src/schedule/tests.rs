@@ -120,9 +120,10 @@ fn the_shipped_table_covers_the_papers_depth() {
     assert!(cal.bins().iter().any(|b| b.count > 1000));
 }
 
-/// True P (audit) summed over frames, for a scheduler at a sphere-test budget.
-fn true_p(kind: SchedulerKind, depth: u32, frames: usize) -> f64 {
+/// True P (audit) summed over frames, for a scheduler at a sphere-test budget under `truth`.
+fn true_p_on(kind: SchedulerKind, depth: u32, frames: usize, truth: crate::Truth) -> f64 {
     let mut cfg = SimConfig::default();
+    cfg.scene.truth = truth;
     cfg.scene.bodies = 400;
     cfg.scene.seed = 21;
     cfg.scene.depth = depth;
@@ -143,14 +144,19 @@ fn true_p(kind: SchedulerKind, depth: u32, frames: usize) -> f64 {
 
 #[test]
 fn priced_lowers_true_perceived_error_at_the_shipped_and_a_self_calibrated_depth() {
-    for depth in [4, 3] {
-        let rr = true_p(SchedulerKind::RoundRobin, depth, 8);
-        let priced = true_p(SchedulerKind::Priced, depth, 8);
-        assert!(rr > 0.0, "the budget must bind at depth {depth}");
-        assert!(
-            priced < 0.7 * rr,
-            "depth {depth}: priced true P {priced} vs round-robin {rr}"
-        );
+    // Under the shape truth more of the deemed error is pairs whose leaves overlap and whose
+    // stars do not; priced leaves 0.73 of round-robin's true P at depth 3 there (against 0.6
+    // or less on the leaves), so its bar is 0.8.
+    for (truth, bar) in [(crate::Truth::LeafSpheres, 0.7), (crate::Truth::Shape, 0.8)] {
+        for depth in [4, 3] {
+            let rr = true_p_on(SchedulerKind::RoundRobin, depth, 8, truth);
+            let priced = true_p_on(SchedulerKind::Priced, depth, 8, truth);
+            assert!(rr > 0.0, "the budget must bind at depth {depth}");
+            assert!(
+                priced < bar * rr,
+                "{truth}, depth {depth}: priced true P {priced} vs round-robin {rr}"
+            );
+        }
     }
 }
 

@@ -1,0 +1,998 @@
+//! Exact contact between two stars: the shape level below the sphere tree's leaves
+//! (docs/DESIGN.md "Exact answer").
+//!
+//! The paper decides a collision on leaf spheres (section 2). They contain the star but overshoot
+//! it by up to 0.36R beside the spike tips, so under that definition every bounce happens across a
+//! visible gap. Under [`crate::Truth::Shape`] a pair whose leaves overlap is then tested here, on
+//! the star itself: a core ball and six cones, each convex, so two stars touch iff some part of
+//! one touches some part of the other, and their distance is the least over part pairs.
+//!
+//! Each part kind has the cheapest exact test there is, as parry does for its convex shapes:
+//! - ball against ball: the centre distance;
+//! - ball against cone: closed form, because a cone is a solid of revolution: the distance from a
+//!   point to it is the distance, in the point's meridian half-plane, to the cone's triangle
+//!   (base centre, rim, apex);
+//! - cone against cone: GJK on the cones' support mappings, with EPA for the penetration depth
+//!   and normal where the cones overlap.
+//!
+//! The hierarchy reaches the parts that can touch before any exact test runs: a part whose
+//! bounding sphere misses the other star's bounding sphere is skipped, a cone pair whose bounding
+//! spheres miss or whose enclosing capsules (axis segment plus base radius) miss is skipped. At
+//! first contact only one or two part pairs survive.
+//!
+//! Everything is in body A's frame, in f64: body B is placed by a [`Pose`], so coordinates are of
+//! the order of R wherever the pair is. Touching counts as colliding (closed shapes), with a
+//! tolerance of [`TOUCH_TOLERANCE`] times R for the iterative tests.
+
+use glam::{DMat3, DVec3};
+
+use crate::shape::Star;
+
+/// Distances at or below this fraction of R count as touching. GJK and EPA stop within a
+/// relative error far below it; the closed forms are exact to rounding.
+pub const TOUCH_TOLERANCE: f64 = 1e-9;
+
+/// Iterations after which GJK or EPA stops with what it has (it converges in 5-15 on these
+/// shapes; the cap only guards degenerate input).
+const MAX_ITERATIONS: usize = 64;
+
+/// Body B's frame expressed in body A's frame: `x_A = rotation * x_B + translation`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pose {
+    /// B's axes in A's frame (the columns are B's x, y and z axes).
+    pub rotation: DMat3,
+    /// B's centre in A's frame.
+    pub translation: DVec3,
+}
+
+/// How two stars stand, in A's frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Contact {
+    /// The stars touch or overlap.
+    Touching {
+        /// Contact point: midway between the two surfaces along the normal.
+        point: DVec3,
+        /// Unit contact normal, from A towards B: moving B along it by `depth` separates them.
+        normal: DVec3,
+        /// Penetration depth (0 when they just touch).
+        depth: f64,
+    },
+    /// The stars are apart.
+    Apart {
+        /// The least distance between them (> 0).
+        distance: f64,
+        /// The point of A nearest B.
+        point_a: DVec3,
+        /// The point of B nearest A.
+        point_b: DVec3,
+    },
+}
+
+impl Contact {
+    /// Whether the stars touch.
+    pub fn is_touching(&self) -> bool {
+        matches!(self, Self::Touching { .. })
+    }
+
+    /// The gap between the two surfaces: 0 when touching.
+    pub fn gap(&self) -> f64 {
+        match *self {
+            Self::Touching { .. } => 0.0,
+            Self::Apart { distance, .. } => distance,
+        }
+    }
+
+    /// Signed distance: the gap when apart, minus the depth when overlapping.
+    pub fn signed_distance(&self) -> f64 {
+        match *self {
+            Self::Touching { depth, .. } => -depth,
+            Self::Apart { distance, .. } => distance,
+        }
+    }
+
+    /// Centre of collision on the shape: the contact point, or the midpoint of the closest
+    /// points when apart.
+    pub fn centre(&self) -> DVec3 {
+        match *self {
+            Self::Touching { point, .. } => point,
+            Self::Apart {
+                point_a, point_b, ..
+            } => (point_a + point_b) * 0.5,
+        }
+    }
+
+    /// Unit normal from A towards B: the contact normal, or the direction from A's closest point
+    /// to B's.
+    pub fn normal(&self) -> DVec3 {
+        match *self {
+            Self::Touching { normal, .. } => normal,
+            Self::Apart {
+                point_a, point_b, ..
+            } => (point_b - point_a).normalize_or(DVec3::X),
+        }
+    }
+}
+
+/// Spike axes in a star's own frame, in part order (part `k + 1` is the spike along `AXES[k]`).
+const AXES: [DVec3; 6] = [
+    DVec3::X,
+    DVec3::NEG_X,
+    DVec3::Y,
+    DVec3::NEG_Y,
+    DVec3::Z,
+    DVec3::NEG_Z,
+];
+
+/// A cone: base disc of `radius` centred at `base`, apex at `base + axis * height`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Cone {
+    base: DVec3,
+    axis: DVec3,
+    height: f64,
+    radius: f64,
+}
+
+impl Cone {
+    #[inline]
+    fn apex(&self) -> DVec3 {
+        self.base + self.axis * self.height
+    }
+
+    /// A point of the cone farthest along `d`: the apex, or the rim point towards `d`.
+    #[inline]
+    fn support(&self, d: DVec3) -> DVec3 {
+        let along = d.dot(self.axis);
+        let perp = d - self.axis * along;
+        let pl = perp.length();
+        // The apex wins iff h (d·axis) >= r |d_perp| (both measured from the base centre).
+        if self.height * along >= self.radius * pl {
+            self.apex()
+        } else if pl > 0.0 {
+            self.base + perp * (self.radius / pl)
+        } else {
+            self.base
+        }
+    }
+}
+
+/// A star's dimensions and the bounds derived from them, for the tests of one scene.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StarGeometry {
+    /// Bounding radius R (the spike apexes).
+    pub radius: f64,
+    /// Core ball radius.
+    pub core: f64,
+    /// Spike base disc radius.
+    pub base: f64,
+    /// Centre of a spike's smallest bounding sphere, along its axis from the star's centre.
+    bound_offset: f64,
+    /// Radius of a spike's smallest bounding sphere.
+    bound_radius: f64,
+    /// Touching tolerance in scene units.
+    eps: f64,
+}
+
+impl StarGeometry {
+    /// The geometry of `star`.
+    pub fn new(star: Star) -> Self {
+        let (h, b) = (star.radius, star.spike_base_radius);
+        // The smallest sphere through the apex and the base rim, centred on the axis, if its
+        // centre lies above the base; else the base disc's own sphere.
+        let s0 = (h * h - b * b) / (2.0 * h);
+        let (bound_offset, bound_radius) = if s0 > 0.0 { (s0, h - s0) } else { (0.0, b) };
+        Self {
+            radius: star.radius,
+            core: star.core_radius,
+            base: b,
+            bound_offset,
+            bound_radius,
+            eps: TOUCH_TOLERANCE * star.radius,
+        }
+    }
+
+    /// Spike `k` of a star at `centre` whose spike axes are `axes`.
+    #[inline]
+    fn cone(&self, centre: DVec3, axis: DVec3) -> Cone {
+        Cone {
+            base: centre,
+            axis,
+            height: self.radius,
+            radius: self.base,
+        }
+    }
+
+    /// Whether star B at `pose` touches star A at the origin (A's frame).
+    ///
+    /// Early-outs in order of cost: the two bounding spheres, the cores, core against spike in
+    /// closed form, then spike against spike by GJK where bounding spheres and capsules allow.
+    pub fn intersects(&self, pose: &Pose) -> bool {
+        let t = pose.translation;
+        let d2 = t.length_squared();
+        let reach = 2.0 * self.radius + self.eps;
+        if d2 > reach * reach {
+            return false;
+        }
+        let core_reach = 2.0 * self.core + self.eps;
+        if d2 <= core_reach * core_reach {
+            return true;
+        }
+        let axes_b = b_axes(pose);
+        let (rb, off) = (self.bound_radius, self.bound_offset);
+        // Spikes of A against B's core, and of B against A's core.
+        let core_bound = rb + self.core + self.eps;
+        for k in 0..6 {
+            let ca = AXES[k] * off;
+            if (ca - t).length_squared() <= core_bound * core_bound
+                && point_cone(t, &self.cone(DVec3::ZERO, AXES[k])).0 <= self.core + self.eps
+            {
+                return true;
+            }
+            let cb = t + axes_b[k] * off;
+            if cb.length_squared() <= core_bound * core_bound
+                && point_cone(DVec3::ZERO, &self.cone(t, axes_b[k])).0 <= self.core + self.eps
+            {
+                return true;
+            }
+        }
+        // Spikes against spikes: only those whose bounding sphere reaches the other star.
+        let star_bound = rb + self.radius + self.eps;
+        let pair_bound = 2.0 * rb + self.eps;
+        let capsule = 2.0 * self.base + self.eps;
+        let mut near_b = [DVec3::ZERO; 6];
+        let mut nb = 0;
+        for axis in axes_b {
+            let cb = t + axis * off;
+            if cb.length_squared() <= star_bound * star_bound {
+                near_b[nb] = axis;
+                nb += 1;
+            }
+        }
+        if nb == 0 {
+            return false;
+        }
+        for axis_a in AXES {
+            let ca = axis_a * off;
+            if (ca - t).length_squared() > star_bound * star_bound {
+                continue;
+            }
+            for &axis_b in &near_b[..nb] {
+                let cb = t + axis_b * off;
+                if (ca - cb).length_squared() > pair_bound * pair_bound {
+                    continue;
+                }
+                let (pa, pb) = (axis_a * self.radius, t + axis_b * self.radius);
+                if segment_distance_squared(DVec3::ZERO, pa, t, pb) > capsule * capsule {
+                    continue;
+                }
+                let (ka, kb) = (self.cone(DVec3::ZERO, axis_a), self.cone(t, axis_b));
+                if gjk(&ka, &kb, self.eps, true).touching {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    /// How star B at `pose` stands against star A at the origin: the deepest contact of any part
+    /// pair when they touch, else the least distance and its closest points.
+    ///
+    /// Part pairs are taken in order of their bounding spheres' separation, a lower bound on
+    /// their signed distance, and the search stops when that bound cannot beat the best found.
+    pub fn contact(&self, pose: &Pose) -> Contact {
+        let t = pose.translation;
+        let axes_b = b_axes(pose);
+        let off = self.bound_offset;
+        // Bounding spheres of the parts: 0 the core, 1..=6 the spikes.
+        let bound = |centre: DVec3, axes: &[DVec3; 6], part: usize| -> (DVec3, f64) {
+            if part == 0 {
+                (centre, self.core)
+            } else {
+                (centre + axes[part - 1] * off, self.bound_radius)
+            }
+        };
+        let mut order = [(0.0f64, 0u8, 0u8); 49];
+        for i in 0..7 {
+            let (ca, ra) = bound(DVec3::ZERO, &AXES, i);
+            for j in 0..7 {
+                let (cb, rb) = bound(t, &axes_b, j);
+                order[i * 7 + j] = ((cb - ca).length() - ra - rb, i as u8, j as u8);
+            }
+        }
+        order.sort_unstable_by(|x, y| x.0.total_cmp(&y.0).then((x.1, x.2).cmp(&(y.1, y.2))));
+        let mut best: Option<(f64, Contact)> = None;
+        for &(lower, i, j) in &order {
+            if best.is_some_and(|(s, _)| lower >= s) {
+                break;
+            }
+            let c = self.part_contact(t, &axes_b, usize::from(i), usize::from(j));
+            let s = c.signed_distance();
+            if best.is_none_or(|(b, _)| s < b) {
+                best = Some((s, c));
+            }
+        }
+        match best {
+            Some((_, c)) => c,
+            None => unreachable!("49 part pairs, the first always evaluated"),
+        }
+    }
+
+    /// Contact of A's part `i` with B's part `j` (0 the core, 1..=6 the spikes).
+    fn part_contact(&self, t: DVec3, axes_b: &[DVec3; 6], i: usize, j: usize) -> Contact {
+        match (i, j) {
+            (0, 0) => balls(DVec3::ZERO, t, self.core, self.eps),
+            (0, j) => flip(ball_cone(
+                DVec3::ZERO,
+                self.core,
+                &self.cone(t, axes_b[j - 1]),
+                self.eps,
+            )),
+            (i, 0) => ball_cone(t, self.core, &self.cone(DVec3::ZERO, AXES[i - 1]), self.eps),
+            (i, j) => cones(
+                &self.cone(DVec3::ZERO, AXES[i - 1]),
+                &self.cone(t, axes_b[j - 1]),
+                self.eps,
+            ),
+        }
+    }
+}
+
+/// B's spike axes in A's frame, in part order.
+#[inline]
+fn b_axes(pose: &Pose) -> [DVec3; 6] {
+    let m = pose.rotation;
+    [
+        m.x_axis, -m.x_axis, m.y_axis, -m.y_axis, m.z_axis, -m.z_axis,
+    ]
+}
+
+/// A contact seen from the other side: A and B swapped.
+fn flip(c: Contact) -> Contact {
+    match c {
+        Contact::Touching {
+            point,
+            normal,
+            depth,
+        } => Contact::Touching {
+            point,
+            normal: -normal,
+            depth,
+        },
+        Contact::Apart {
+            distance,
+            point_a,
+            point_b,
+        } => Contact::Apart {
+            distance,
+            point_a: point_b,
+            point_b: point_a,
+        },
+    }
+}
+
+/// Two balls of radius `r` at `a` and `b`.
+fn balls(a: DVec3, b: DVec3, r: f64, eps: f64) -> Contact {
+    let d = b - a;
+    let len = d.length();
+    // Coincident centres: any normal separates them equally well; +x is the deterministic pick.
+    let n = if len > 0.0 { d / len } else { DVec3::X };
+    let s = len - 2.0 * r;
+    if s <= eps {
+        Contact::Touching {
+            point: a + n * (0.5 * len),
+            normal: n,
+            depth: (-s).max(0.0),
+        }
+    } else {
+        Contact::Apart {
+            distance: s,
+            point_a: a + n * r,
+            point_b: b - n * r,
+        }
+    }
+}
+
+/// A cone (part of A) against a ball of radius `r` at `centre` (part of B).
+fn ball_cone(centre: DVec3, r: f64, cone: &Cone, eps: f64) -> Contact {
+    let (sd, on_cone, n) = point_cone(centre, cone);
+    let s = sd - r;
+    if s <= eps {
+        let on_ball = centre - n * r;
+        Contact::Touching {
+            point: (on_cone + on_ball) * 0.5,
+            normal: n,
+            depth: (-s).max(0.0),
+        }
+    } else {
+        Contact::Apart {
+            distance: s,
+            point_a: on_cone,
+            point_b: centre - n * r,
+        }
+    }
+}
+
+/// Any unit vector perpendicular to unit `a` (deterministic).
+#[inline]
+fn perpendicular(a: DVec3) -> DVec3 {
+    a.any_orthonormal_vector()
+}
+
+/// Signed distance from `p` to `cone` (negative inside), the nearest point of its surface, and
+/// the unit outward normal there (from the cone towards `p` when outside).
+///
+/// The cone is a solid of revolution, so the question is two-dimensional: in the half-plane
+/// through the axis and `p`, with `t` along the axis and `rho` away from it, the cone is the
+/// triangle (0, 0), (0, b), (h, 0); the axis edge is inside the solid, not on its surface.
+fn point_cone(p: DVec3, cone: &Cone) -> (f64, DVec3, DVec3) {
+    let (h, b) = (cone.height, cone.radius);
+    let u = p - cone.base;
+    let t = u.dot(cone.axis);
+    let radial = u - cone.axis * t;
+    let rho = radial.length();
+    let e = if rho > 0.0 {
+        radial / rho
+    } else {
+        perpendicular(cone.axis)
+    };
+    let l = h.hypot(b);
+    // Signed distance to the slant side's line, positive outside.
+    let slant = (b * t + h * rho - b * h) / l;
+    let slant_normal = (cone.axis * b + e * h) / l;
+    if t >= 0.0 && slant <= 0.0 {
+        // Inside: the nearer of the base plane and the slant side (a convex polygon's interior
+        // point is nearest its boundary on the edge whose line is nearest).
+        return if t <= -slant {
+            (-t, p - cone.axis * t, -cone.axis)
+        } else {
+            (slant, p - slant_normal * slant, slant_normal)
+        };
+    }
+    // Outside: the nearer of the base segment (0, 0)-(0, b) and the slant segment (0, b)-(h, 0).
+    let base_pt = (0.0, rho.clamp(0.0, b));
+    let s = ((t * h - (rho - b) * b) / (l * l)).clamp(0.0, 1.0);
+    let slant_pt = (s * h, b - s * b);
+    let d2 = |q: (f64, f64)| (t - q.0).powi(2) + (rho - q.1).powi(2);
+    let (tc, rc) = if d2(base_pt) <= d2(slant_pt) {
+        base_pt
+    } else {
+        slant_pt
+    };
+    let q = cone.base + cone.axis * tc + e * rc;
+    let dist = d2((tc, rc)).sqrt();
+    let n = if dist > 0.0 {
+        (p - q) / dist
+    } else if tc <= 0.0 && rc < b {
+        -cone.axis
+    } else {
+        slant_normal
+    };
+    (dist, q, n)
+}
+
+/// Squared distance between segments `p0`-`p1` and `q0`-`q1` (closed form, clamped).
+fn segment_distance_squared(p0: DVec3, p1: DVec3, q0: DVec3, q1: DVec3) -> f64 {
+    let d1 = p1 - p0;
+    let d2 = q1 - q0;
+    let r = p0 - q0;
+    let a = d1.length_squared();
+    let e = d2.length_squared();
+    let f = d2.dot(r);
+    let c = d1.dot(r);
+    let b = d1.dot(d2);
+    let denom = a * e - b * b;
+    let mut s = if denom > 1e-300 {
+        ((b * f - c * e) / denom).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let mut tt = (b * s + f) / e;
+    if tt < 0.0 {
+        tt = 0.0;
+        s = (-c / a).clamp(0.0, 1.0);
+    } else if tt > 1.0 {
+        tt = 1.0;
+        s = ((b - c) / a).clamp(0.0, 1.0);
+    }
+    ((p0 + d1 * s) - (q0 + d2 * tt)).length_squared()
+}
+
+/// A vertex of the Minkowski difference A - B, with the points of A and B it came from.
+#[derive(Debug, Clone, Copy, Default)]
+struct Vertex {
+    w: DVec3,
+    a: DVec3,
+    b: DVec3,
+}
+
+#[inline]
+fn support(ka: &Cone, kb: &Cone, d: DVec3) -> Vertex {
+    let a = ka.support(d);
+    let b = kb.support(-d);
+    Vertex { w: a - b, a, b }
+}
+
+/// What GJK found.
+#[derive(Debug, Clone, Copy)]
+struct Gjk {
+    /// The cones touch (distance within the tolerance, or the origin enclosed).
+    touching: bool,
+    /// Closest point of A - B to the origin (meaningful when apart).
+    v: DVec3,
+    /// The simplex and its barycentric weights.
+    simplex: [Vertex; 4],
+    weights: [f64; 4],
+    len: usize,
+}
+
+/// GJK distance between two cones. With `boolean`, stops as soon as a separating axis is found.
+fn gjk(ka: &Cone, kb: &Cone, eps: f64, boolean: bool) -> Gjk {
+    let mut d = kb.base - ka.base;
+    if d.length_squared() == 0.0 {
+        d = DVec3::X;
+    }
+    let first = support(ka, kb, -d);
+    let mut g = Gjk {
+        touching: false,
+        v: first.w,
+        simplex: [
+            first,
+            Vertex::default(),
+            Vertex::default(),
+            Vertex::default(),
+        ],
+        weights: [1.0, 0.0, 0.0, 0.0],
+        len: 1,
+    };
+    for _ in 0..MAX_ITERATIONS {
+        let v = g.v;
+        let vv = v.length_squared();
+        if vv <= eps * eps {
+            g.touching = true;
+            return g;
+        }
+        let w = support(ka, kb, -v);
+        let vw = v.dot(w.w);
+        // The plane through w normal to v bounds A - B away from the origin: a distance of at
+        // least vw / |v| is proven.
+        if boolean && vw > eps * vv.sqrt() {
+            return g;
+        }
+        if vv - vw <= 1e-12 * vv || g.simplex[..g.len].iter().any(|s| s.w == w.w) {
+            // Converged: no vertex gets nearer the origin.
+            g.touching = vv.sqrt() <= eps;
+            return g;
+        }
+        g.simplex[g.len] = w;
+        g.len += 1;
+        if !reduce(&mut g) {
+            g.touching = true;
+            return g;
+        }
+    }
+    g.touching = g.v.length() <= eps;
+    g
+}
+
+/// Replace the simplex by the smallest face of it that holds its point nearest the origin, with
+/// that point's barycentric weights. Returns false when the simplex encloses the origin.
+fn reduce(g: &mut Gjk) -> bool {
+    let s = g.simplex;
+    match g.len {
+        2 => {
+            set(g, &s, &closest_segment(s[0].w, s[1].w));
+            true
+        }
+        3 => {
+            set(g, &s, &closest_triangle([s[0].w, s[1].w, s[2].w]));
+            true
+        }
+        4 => match closest_tetrahedron([s[0].w, s[1].w, s[2].w, s[3].w]) {
+            Some(c) => {
+                set(g, &s, &c);
+                true
+            }
+            None => false,
+        },
+        _ => true,
+    }
+}
+
+fn set(g: &mut Gjk, s: &[Vertex; 4], c: &Closest) {
+    for k in 0..c.len {
+        g.simplex[k] = s[c.idx[k]];
+        g.weights[k] = c.w[k];
+    }
+    g.len = c.len;
+    g.v = c.v;
+}
+
+/// The point of a simplex nearest the origin: the face that holds it (`len` vertex indices) and
+/// its barycentric weights on that face.
+#[derive(Debug, Clone, Copy)]
+struct Closest {
+    v: DVec3,
+    len: usize,
+    idx: [usize; 3],
+    w: [f64; 3],
+}
+
+impl Closest {
+    #[inline]
+    fn vertex(v: DVec3, i: usize) -> Self {
+        Self {
+            v,
+            len: 1,
+            idx: [i, 0, 0],
+            w: [1.0, 0.0, 0.0],
+        }
+    }
+
+    #[inline]
+    fn edge(v: DVec3, i: usize, j: usize, t: f64) -> Self {
+        Self {
+            v,
+            len: 2,
+            idx: [i, j, 0],
+            w: [1.0 - t, t, 0.0],
+        }
+    }
+}
+
+/// Point of segment `a`-`b` nearest the origin.
+fn closest_segment(a: DVec3, b: DVec3) -> Closest {
+    let ab = b - a;
+    let den = ab.length_squared();
+    let t = if den > 0.0 { -a.dot(ab) / den } else { 0.0 };
+    if t <= 0.0 {
+        Closest::vertex(a, 0)
+    } else if t >= 1.0 {
+        Closest::vertex(b, 1)
+    } else {
+        Closest::edge(a + ab * t, 0, 1, t)
+    }
+}
+
+/// Point of triangle `p` nearest the origin, by Voronoi regions (Ericson, Real-Time Collision
+/// Detection, 5.1.5).
+fn closest_triangle(p: [DVec3; 3]) -> Closest {
+    let [a, b, c] = p;
+    let (ab, ac) = (b - a, c - a);
+    let d1 = ab.dot(-a);
+    let d2 = ac.dot(-a);
+    if d1 <= 0.0 && d2 <= 0.0 {
+        return Closest::vertex(a, 0);
+    }
+    let d3 = ab.dot(-b);
+    let d4 = ac.dot(-b);
+    if d3 >= 0.0 && d4 <= d3 {
+        return Closest::vertex(b, 1);
+    }
+    let vc = d1 * d4 - d3 * d2;
+    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
+        let v = d1 / (d1 - d3);
+        return Closest::edge(a + ab * v, 0, 1, v);
+    }
+    let d5 = ab.dot(-c);
+    let d6 = ac.dot(-c);
+    if d6 >= 0.0 && d5 <= d6 {
+        return Closest::vertex(c, 2);
+    }
+    let vb = d5 * d2 - d1 * d6;
+    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
+        let w = d2 / (d2 - d6);
+        return Closest::edge(a + ac * w, 0, 2, w);
+    }
+    let va = d3 * d6 - d5 * d4;
+    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
+        let w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return Closest::edge(b + (c - b) * w, 1, 2, w);
+    }
+    let sum = va + vb + vc;
+    if sum.abs() <= f64::MIN_POSITIVE {
+        // A degenerate (zero-area) triangle: its nearest edge.
+        return closest_segment(a, b);
+    }
+    let denom = 1.0 / sum;
+    let (v, w) = (vb * denom, vc * denom);
+    Closest {
+        v: a + ab * v + ac * w,
+        len: 3,
+        idx: [0, 1, 2],
+        w: [1.0 - v - w, v, w],
+    }
+}
+
+/// Point of tetrahedron `p` nearest the origin, or `None` if it encloses the origin.
+fn closest_tetrahedron(p: [DVec3; 4]) -> Option<Closest> {
+    const FACES: [[usize; 4]; 4] = [[0, 1, 2, 3], [0, 2, 3, 1], [0, 3, 1, 2], [1, 3, 2, 0]];
+    let volume = (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]));
+    let scale = (p[1] - p[0]).length() * (p[2] - p[0]).length() * (p[3] - p[0]).length();
+    let flat = volume.abs() <= 1e-12 * scale;
+    let mut best: Option<Closest> = None;
+    for f in FACES {
+        let (a, b, c, d) = (p[f[0]], p[f[1]], p[f[2]], p[f[3]]);
+        let n = (b - a).cross(c - a);
+        // The origin lies beyond this face (on the side away from the fourth vertex).
+        let outside = flat || (-a).dot(n) * (d - a).dot(n) < 0.0;
+        if !outside {
+            continue;
+        }
+        let mut c = closest_triangle([a, b, c]);
+        if best.is_none_or(|b| c.v.length_squared() < b.v.length_squared()) {
+            for k in 0..c.len {
+                c.idx[k] = f[c.idx[k]];
+            }
+            best = Some(c);
+        }
+    }
+    best
+}
+
+/// Contact of two cones (A's, B's): GJK for their distance, EPA for their penetration.
+fn cones(ka: &Cone, kb: &Cone, eps: f64) -> Contact {
+    let g = gjk(ka, kb, eps, false);
+    let point = |g: &Gjk, pick: fn(&Vertex) -> DVec3| -> DVec3 {
+        (0..g.len).map(|k| pick(&g.simplex[k]) * g.weights[k]).sum()
+    };
+    if !g.touching {
+        return Contact::Apart {
+            distance: g.v.length(),
+            point_a: point(&g, |s| s.a),
+            point_b: point(&g, |s| s.b),
+        };
+    }
+    if g.len == 4
+        && let Some(c) = epa(ka, kb, &g.simplex, eps)
+    {
+        return c;
+    }
+    // Touching within the tolerance (or a flat simplex): depth 0 at the nearest points, the
+    // normal along the centre line of the two cones' bounding segments as a last resort.
+    let (pa, pb) = if g.len < 4 {
+        (point(&g, |s| s.a), point(&g, |s| s.b))
+    } else {
+        (
+            ka.base + ka.axis * (0.5 * ka.height),
+            kb.base + kb.axis * (0.5 * kb.height),
+        )
+    };
+    let normal = if g.len < 4 && g.v.length_squared() > 0.0 {
+        -g.v.normalize()
+    } else {
+        (kb.base - ka.base).normalize_or(DVec3::X)
+    };
+    Contact::Touching {
+        point: (pa + pb) * 0.5,
+        normal,
+        depth: 0.0,
+    }
+}
+
+/// Expanding polytope: the penetration depth and normal of two overlapping cones from GJK's
+/// enclosing tetrahedron. `None` if the polytope degenerates.
+fn epa(ka: &Cone, kb: &Cone, start: &[Vertex; 4], eps: f64) -> Option<Contact> {
+    let mut verts: Vec<Vertex> = start.to_vec();
+    // Faces with outward normals (the tetrahedron's orientation fixed first).
+    let mut faces: Vec<[usize; 3]> = Vec::with_capacity(64);
+    let centroid = verts.iter().map(|v| v.w).sum::<DVec3>() * 0.25;
+    for f in [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]] {
+        let n = (verts[f[1]].w - verts[f[0]].w).cross(verts[f[2]].w - verts[f[0]].w);
+        if n.dot(verts[f[0]].w - centroid) < 0.0 {
+            faces.push([f[0], f[2], f[1]]);
+        } else {
+            faces.push(f);
+        }
+    }
+    let plane = |verts: &[Vertex], f: &[usize; 3]| -> Option<(DVec3, f64)> {
+        let n = (verts[f[1]].w - verts[f[0]].w).cross(verts[f[2]].w - verts[f[0]].w);
+        let n = n.try_normalize()?;
+        Some((n, n.dot(verts[f[0]].w)))
+    };
+    for _ in 0..MAX_ITERATIONS {
+        // The face nearest the origin.
+        let mut nearest: Option<(usize, DVec3, f64)> = None;
+        for (k, f) in faces.iter().enumerate() {
+            let (n, d) = plane(&verts, f)?;
+            if nearest.is_none_or(|(_, _, b)| d < b) {
+                nearest = Some((k, n, d));
+            }
+        }
+        let (k, n, d) = nearest?;
+        let w = support(ka, kb, n);
+        if w.w.dot(n) - d <= eps.max(1e-9 * d.abs()) {
+            return Some(face_contact(&verts, &faces[k], n, d));
+        }
+        // Remove every face that sees w; the horizon's edges, each met once, bound the hole.
+        let mut horizon: Vec<[usize; 2]> = Vec::new();
+        let mut kept = Vec::with_capacity(faces.len() + 4);
+        for f in &faces {
+            let (fnrm, fd) = plane(&verts, f)?;
+            if fnrm.dot(w.w) - fd > 0.0 {
+                for e in [[f[0], f[1]], [f[1], f[2]], [f[2], f[0]]] {
+                    if let Some(pos) = horizon.iter().position(|h| *h == [e[1], e[0]]) {
+                        horizon.swap_remove(pos);
+                    } else {
+                        horizon.push(e);
+                    }
+                }
+            } else {
+                kept.push(*f);
+            }
+        }
+        if horizon.is_empty() {
+            return Some(face_contact(&verts, &faces[k], n, d));
+        }
+        let wi = verts.len();
+        verts.push(w);
+        for e in horizon {
+            kept.push([e[0], e[1], wi]);
+        }
+        faces = kept;
+    }
+    // Not converged within the cap: the nearest face so far is within the last improvement.
+    let mut nearest: Option<(usize, DVec3, f64)> = None;
+    for (k, f) in faces.iter().enumerate() {
+        let (n, d) = plane(&verts, f)?;
+        if nearest.is_none_or(|(_, _, b)| d < b) {
+            nearest = Some((k, n, d));
+        }
+    }
+    let (k, n, d) = nearest?;
+    Some(face_contact(&verts, &faces[k], n, d))
+}
+
+/// The contact given by EPA's nearest face: the origin's projection `n d` on it, in barycentric
+/// weights, gives the two witness points.
+fn face_contact(verts: &[Vertex], f: &[usize; 3], n: DVec3, d: f64) -> Contact {
+    let (a, b, c) = (verts[f[0]], verts[f[1]], verts[f[2]]);
+    let p = n * d;
+    let (v0, v1, v2) = (b.w - a.w, c.w - a.w, p - a.w);
+    let (d00, d01, d11) = (v0.dot(v0), v0.dot(v1), v1.dot(v1));
+    let (d20, d21) = (v2.dot(v0), v2.dot(v1));
+    let den = d00 * d11 - d01 * d01;
+    let (u, v) = if den.abs() > 0.0 {
+        ((d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den)
+    } else {
+        (0.0, 0.0)
+    };
+    let weights = [1.0 - u - v, u, v];
+    let pa = a.a * weights[0] + b.a * weights[1] + c.a * weights[2];
+    let pb = a.b * weights[0] + b.b * weights[1] + c.b * weights[2];
+    Contact::Touching {
+        point: (pa + pb) * 0.5,
+        normal: n,
+        depth: d.max(0.0),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn geometry() -> StarGeometry {
+        StarGeometry::new(Star::new(1.0))
+    }
+
+    fn pose(t: DVec3) -> Pose {
+        Pose {
+            rotation: DMat3::IDENTITY,
+            translation: t,
+        }
+    }
+
+    #[test]
+    fn cores_touch_at_twice_their_radius() {
+        let g = geometry();
+        // Along a diagonal the cores face each other; with the same orientation the spikes'
+        // flanks face each other too and come nearer than the cores' 0.1.
+        let dir = DVec3::new(1.0, 1.0, 1.0).normalize();
+        assert!(g.intersects(&pose(dir * 0.59)));
+        let c = g.contact(&pose(dir * 0.7));
+        assert!(c.gap() > 0.0 && c.gap() < 0.1, "{c:?}");
+        // The cores alone, with B's spikes turned away: B's core against A's core is the
+        // nearest part pair only while no spike reaches in, which the contact must not miss.
+        let c = balls(DVec3::ZERO, dir * 0.7, 0.3, 0.0);
+        assert!((c.gap() - 0.1).abs() < 1e-12, "{c:?}");
+    }
+
+    #[test]
+    fn spike_tips_meet_on_their_axis() {
+        let g = geometry();
+        // Tip against tip along x: apart by d - 2R.
+        for (d, touching) in [(1.99, true), (2.0, true), (2.01, false)] {
+            let p = pose(DVec3::new(d, 0.0, 0.0));
+            assert_eq!(g.intersects(&p), touching, "d = {d}");
+            assert_eq!(g.contact(&p).is_touching(), touching, "d = {d}");
+        }
+        let c = g.contact(&pose(DVec3::new(2.1, 0.0, 0.0)));
+        assert!((c.gap() - 0.1).abs() < 1e-9, "{c:?}");
+        assert!((c.normal() - DVec3::X).length() < 1e-9);
+    }
+
+    #[test]
+    fn a_tip_against_the_core() {
+        let g = geometry();
+        // B rotated 45 degrees about z: its spikes along x and y miss A's +x spike's line,
+        // and B's core meets A's +x tip when the centres are R + 0.3R apart... along x B's
+        // own -x-ish spikes are off-axis, so the nearest part of B to A's tip is its core.
+        let rot = DMat3::from_rotation_z(std::f64::consts::FRAC_PI_4)
+            * DMat3::from_rotation_x(std::f64::consts::FRAC_PI_4);
+        let p = |d: f64| Pose {
+            rotation: rot,
+            translation: DVec3::new(d, 0.0, 0.0),
+        };
+        let c = g.contact(&p(1.5));
+        assert!(!c.is_touching());
+        assert!(g.intersects(&p(1.25)));
+    }
+
+    #[test]
+    fn coincident_centres_overlap_deeply() {
+        let g = geometry();
+        let c = g.contact(&pose(DVec3::ZERO));
+        assert!(g.intersects(&pose(DVec3::ZERO)));
+        match c {
+            Contact::Touching { depth, normal, .. } => {
+                assert!(depth >= 0.6 - 1e-9, "{depth}");
+                assert!((normal.length() - 1.0).abs() < 1e-9);
+            }
+            Contact::Apart { .. } => panic!("coincident stars apart"),
+        }
+    }
+
+    #[test]
+    fn point_cone_matches_the_triangle() {
+        let k = Cone {
+            base: DVec3::ZERO,
+            axis: DVec3::X,
+            height: 1.0,
+            radius: 0.25,
+        };
+        // Beyond the apex, on the axis.
+        let (d, q, n) = point_cone(DVec3::new(1.5, 0.0, 0.0), &k);
+        assert!((d - 0.5).abs() < 1e-12 && q == DVec3::X && n == DVec3::X);
+        // Below the base, inside the rim.
+        let (d, _, n) = point_cone(DVec3::new(-0.2, 0.1, 0.0), &k);
+        assert!((d - 0.2).abs() < 1e-12 && n == DVec3::NEG_X);
+        // Inside, nearest the slant side.
+        let (d, _, _) = point_cone(DVec3::new(0.5, 0.0, 0.0), &k);
+        let l = 1.0f64.hypot(0.25);
+        assert!((d + 0.25 * 0.5 / l).abs() < 1e-12, "{d}");
+    }
+
+    #[test]
+    fn cone_pairs_by_gjk_agree_with_a_closed_case() {
+        // Two coaxial spikes tip to tip, and two crossing spikes whose axes pass at height e.
+        let g = geometry();
+        let ka = g.cone(DVec3::ZERO, DVec3::X);
+        let kb = g.cone(DVec3::new(2.3, 0.0, 0.0), DVec3::NEG_X);
+        let c = cones(&ka, &kb, g.eps);
+        assert!((c.gap() - 0.3).abs() < 1e-9, "{c:?}");
+        // Perpendicular spikes: A along x, B along y placed so B's axis crosses above A's apex
+        // region; penetrating pairs come back with a unit normal and a depth.
+        let kb = Cone {
+            base: DVec3::new(0.5, -0.6, 0.1),
+            axis: DVec3::Y,
+            height: 1.0,
+            radius: 0.25,
+        };
+        match cones(&ka, &kb, g.eps) {
+            Contact::Touching { normal, depth, .. } => {
+                assert!((normal.length() - 1.0).abs() < 1e-9);
+                assert!(depth > 0.0 && depth < 0.25, "{depth}");
+                // Moving B along the normal by the depth (plus a hair) separates them.
+                let moved = Cone {
+                    base: kb.base + normal * (depth + 1e-6),
+                    ..kb
+                };
+                assert!(!cones(&ka, &moved, g.eps).is_touching());
+                let less = Cone {
+                    base: kb.base + normal * (depth - 1e-4),
+                    ..kb
+                };
+                assert!(cones(&ka, &less, g.eps).is_touching());
+            }
+            c @ Contact::Apart { .. } => panic!("crossing spikes apart: {c:?}"),
+        }
+    }
+}
