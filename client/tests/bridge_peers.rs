@@ -6,7 +6,7 @@
 //! (CI makes a venv). Without it these tests print why and pass; with FOVEAL_REQUIRE_PEERS=1 a
 //! missing interpreter is a failure.
 
-// The shared recordings (`common::gaze_data`) are not needed here.
+// The gaze recording (`common::gaze_data`) is not needed here.
 #[allow(dead_code)]
 mod common;
 

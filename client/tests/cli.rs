@@ -117,11 +117,11 @@ async fn commands_talk_to_the_server_and_exit_with_the_right_code() {
     assert_eq!(out.status.code(), Some(1), "no server: unhealthy");
 }
 
-/// `foveal fixations` on the shared EyeLink recording, scored against the tracker's own parser:
+/// `foveal fixations` on the EyeLink recording in `data/gaze`, scored against the tracker's own parser:
 /// the documented target (F1 >= 0.9, median onset and offset differences <= 10 ms), read from
 /// the command's own output; the output reads back as a fixation list.
 #[test]
-fn fixations_agree_with_the_tracker_parser_on_the_shared_recording() {
+fn fixations_agree_with_the_tracker_parser_on_the_eyelink_recording() {
     let recording = gaze_data("eyelink-1000hz-left.asc");
     let reference = gaze_data("eyelink-1000hz-left.fixations.csv");
     let out = foveal()

@@ -17,6 +17,8 @@
 //! - `tests/record_replay.rs`: a session recorded with `--record` replays bit for bit.
 //! - `tests/security.rs`: roles, TLS, loopback-only without tokens; `tests/limits.rs`: scene
 //!   cost, oversize messages, gaze rate limit, honest health, shutdown with stalled subscribers.
+//! - `tests/doc_citations.rs`: every document and section the code and docs cite exists, and
+//!   nothing points outside the repository (no server involved).
 
 // Test helpers panic with a message on setup failures; that is the failure report.
 #![allow(clippy::missing_panics_doc)]

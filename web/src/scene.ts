@@ -13,8 +13,8 @@ export const COLOURS = {
 } as const;
 
 /**
- * The star of DESIGN.md: a core ball of radius 0.3R and six cones along ±x, ±y, ±z with apex at R
- * and a base disc of radius 0.25R at the origin.
+ * The star of docs/DESIGN.md "Shape": a core ball of radius 0.3R and six cones along ±x, ±y, ±z
+ * with apex at R and a base disc of radius 0.25R at the origin.
  */
 export function starGeometry(radius: number): THREE.BufferGeometry {
   // Few triangles (about 60): at N = 10,000 a software-rendered WebGL still keeps up.

@@ -1,6 +1,6 @@
 //! Cost per sample of the server's online gaze processing: validation, the 1€ filter and the
 //! fixation detector (I-VT and I-DT), on the scripted viewer's samples at 1 kHz and 2 kHz (short
-//! fixations) and on the shared EyeLink recording at 1 kHz (fixations of up to 11 s).
+//! fixations) and on the EyeLink recording in `data/gaze` at 1 kHz (fixations of up to 11 s).
 //! Target: at most 1 µs per sample (docs/BENCHMARKS.md).
 //!
 //! `cargo bench -p foveal-gaze --bench processing`
@@ -32,25 +32,23 @@ fn samples(rate_hz: f64) -> Vec<GazeSample> {
         .collect()
 }
 
-/// The shared EyeLink recording (66.8 s at 1 kHz), if it is there.
-fn recording() -> Option<Vec<GazeSample>> {
+/// The EyeLink recording in the repository's `data/gaze` (66.8 s at 1 kHz).
+fn recording() -> Vec<GazeSample> {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/data/gaze/eyelink-1000hz-left.samples.csv");
-    let file = std::fs::File::open(path).ok()?;
+        .join("../../data/gaze/eyelink-1000hz-left.samples.csv");
+    let file =
+        std::fs::File::open(&path).unwrap_or_else(|e| panic!("open {}: {e}", path.display()));
     foveal_gaze::csv::CsvGazeReader::new(std::io::BufReader::new(file))
         .collect::<Result<Vec<_>, _>>()
-        .ok()
+        .unwrap_or_else(|e| panic!("parse {}: {e}", path.display()))
 }
 
 fn bench(c: &mut Criterion) {
-    let mut inputs = vec![
+    let inputs = vec![
         ("viewer_1000hz", samples(1000.0)),
         ("viewer_2000hz", samples(2000.0)),
+        ("eyelink_1000hz", recording()),
     ];
-    match recording() {
-        Some(r) => inputs.push(("eyelink_1000hz", r)),
-        None => eprintln!("shared EyeLink recording not found: benchmarking the viewer only"),
-    }
     for (input_name, input) in inputs {
         let mut group = c.benchmark_group(input_name);
         group.throughput(Throughput::Elements(input.len() as u64));

@@ -1,4 +1,4 @@
-//! Tests against the real EyeLink recording in `shared/data/gaze`: 66.8 s at 1000 Hz, left eye,
+//! Tests against the real EyeLink recording in the repository's `data/gaze`: 66.8 s at 1000 Hz, left eye,
 //! 1920x1080 px, the same samples as ASC and as pixel CSV, plus the tracker's fixation list.
 
 use std::fs::File;
@@ -17,7 +17,7 @@ const MISSING: usize = 710;
 
 fn data_path(extension: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/data/gaze")
+        .join("../../data/gaze")
         .join(format!("{STEM}.{extension}"))
 }
 

@@ -1,6 +1,6 @@
-//! Open-loop comparison of schedulers (DESIGN.md "Open-loop protocol"): one exact run of the paper
-//! scene gives the frames, and every scheduler and budget is evaluated on exactly those frames, each
-//! against the clairvoyant bound of that frame.
+//! Open-loop comparison of schedulers (docs/DESIGN.md "Open-loop protocol"): one exact run of the
+//! paper scene gives the frames, and every scheduler and budget is evaluated on exactly those
+//! frames, each against the clairvoyant bound of that frame.
 //!
 //! Per frame of the exact run, every candidate pair is settled once to learn its truth (collides or
 //! not, its true gap, its exact cost). A scheduler's true P is then the sum of the true weights of

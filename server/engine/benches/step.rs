@@ -1,4 +1,4 @@
-//! Speed of the paper scene in exact mode (DESIGN.md "Scene"); figures go to docs/BENCHMARKS.md.
+//! Speed of the paper scene in exact mode (docs/DESIGN.md "Scene"); figures go to docs/BENCHMARKS.md.
 //!
 //! `cargo bench -p foveal-engine --bench step`
 //! - `frame_exact/10000`: one whole frame (integrate, broad, narrow to completion, response).
