@@ -14,6 +14,9 @@
 //!   witnesses of frame 60, on 1 and 2 threads: what an exact frame's narrow phase costs in the
 //!   steady state (about 25 sphere tests per candidate pair, half of the pairs settled by the
 //!   root test); per sphere test in the throughput line.
+//!   `narrow_steady/{10000,100000}-leaf/{1,2}`: the same under the paper's leaf-sphere truth.
+//! - `shape/{intersects,contact}/10000`: the shape level alone on the pairs of frame 61 whose
+//!   leaves overlap, per pair.
 //! - `foveal_pass/{stepped,one-go-1t,one-go-2t}/100000`: a whole-frame budget's foveal pass over
 //!   frame 61 with a fixation at the centre (every pair within 5 degrees settled), as it was (each
 //!   pair stepped level by level) and as it is (each resolved in one go, on 1 and 2 threads); per
@@ -38,11 +41,12 @@ use std::time::{Duration, Instant};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use foveal_engine::broad_phase::{BroadPhase, BroadPhaseKind};
 use foveal_engine::narrow_phase::NarrowPhase;
+use foveal_engine::narrow_phase::PairStatus;
 use foveal_engine::shape::Star;
 use foveal_engine::sphere_tree::SphereTree;
 use foveal_engine::world::World;
 use foveal_engine::{
-    BudgetSpec, Clock, FrozenClock, SceneConfig, SchedulerKind, SimConfig, Simulation,
+    BudgetSpec, Clock, FrozenClock, SceneConfig, SchedulerKind, SimConfig, Simulation, Truth,
 };
 
 struct Mono(Instant);
@@ -179,8 +183,17 @@ fn narrow(c: &mut Criterion) {
 fn narrow_steady(c: &mut Criterion) {
     let mut g = c.benchmark_group("narrow_steady");
     g.measurement_time(Duration::from_secs(8));
-    for n in [10_000u32, 100_000] {
-        let mut sim = Simulation::new(exact(n)).expect("valid");
+    for (n, truth) in [10_000u32, 100_000]
+        .into_iter()
+        .flat_map(|n| [(n, Truth::Shape), (n, Truth::LeafSpheres)])
+    {
+        let mut cfg = exact(n);
+        cfg.scene.truth = truth;
+        let label = match truth {
+            Truth::Shape => n.to_string(),
+            Truth::LeafSpheres => format!("{n}-leaf"),
+        };
+        let mut sim = Simulation::new(cfg).expect("valid");
         for _ in 0..60 {
             sim.step(None, &FrozenClock);
         }
@@ -196,7 +209,7 @@ fn narrow_steady(c: &mut Criterion) {
             np.reset(&pairs);
             np.resolve_all(&tree, &world, threads);
             g.throughput(Throughput::Elements(np.tests));
-            g.bench_function(BenchmarkId::new(n.to_string(), threads), |b| {
+            g.bench_function(BenchmarkId::new(label.clone(), threads), |b| {
                 b.iter(|| {
                     np.reset(&pairs);
                     np.resolve_all(&tree, &world, threads);
@@ -205,6 +218,47 @@ fn narrow_steady(c: &mut Criterion) {
             });
         }
     }
+    g.finish();
+}
+
+/// The shape level alone: every pair of frame 61 at N = 10,000 (shape truth) whose leaves
+/// overlap, tested on the stars (`intersects`, what the narrow phase runs) and fully
+/// (`contact`, what the response and the audit run); per pair in the throughput line. Beside
+/// `narrow_steady`'s ns per sphere test this gives `SHAPE_TEST_COST`.
+fn shape(c: &mut Criterion) {
+    use foveal_engine::narrow_phase::shape_pose;
+    let mut g = c.benchmark_group("shape");
+    let n = 10_000;
+    let mut cfg = exact(n);
+    cfg.scene.truth = Truth::LeafSpheres;
+    let mut sim = Simulation::new(cfg).expect("valid");
+    for _ in 0..61 {
+        sim.step(None, &FrozenClock);
+    }
+    let poses: Vec<_> = sim
+        .pairs()
+        .iter()
+        .filter(|p| p.status == PairStatus::Colliding)
+        .map(|p| shape_pose(sim.world(), p.a as usize, p.b as usize))
+        .collect();
+    let geometry = *sim.tree().geometry();
+    g.throughput(Throughput::Elements(poses.len() as u64));
+    g.bench_function(BenchmarkId::new("intersects", n), |b| {
+        b.iter(|| {
+            poses
+                .iter()
+                .filter(|p| geometry.intersects(black_box(p)))
+                .count()
+        })
+    });
+    g.bench_function(BenchmarkId::new("contact", n), |b| {
+        b.iter(|| {
+            poses
+                .iter()
+                .map(|p| geometry.contact(black_box(p)).signed_distance())
+                .sum::<f64>()
+        })
+    });
     g.finish();
 }
 
@@ -435,6 +489,7 @@ criterion_group!(
     broad,
     narrow,
     narrow_steady,
+    shape,
     measure,
     ordering
 );

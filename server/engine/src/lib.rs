@@ -57,6 +57,7 @@ pub mod guard;
 pub mod math;
 pub mod metrics;
 pub mod narrow_phase;
+pub mod near_memo;
 pub mod perception;
 pub mod prefetch;
 pub mod report;

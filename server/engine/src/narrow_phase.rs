@@ -20,6 +20,7 @@ use pulp::x86::V3;
 
 use crate::config::Truth;
 use crate::math::{LMat3, LVec3, Vec3};
+use crate::near_memo::{Memo, NearTable};
 use crate::sphere_tree::{LANES, SphereTree};
 use crate::star_contact::{Contact, Pose};
 use crate::world::World;
@@ -316,6 +317,53 @@ fn remember(witness: &mut [Witness], witnessed: &mut Vec<u32>, p: &PairState) {
     witnessed.push(p.a);
 }
 
+/// Keep pair `p`'s leaf pair as its first body's witness unless a colliding pair already holds
+/// that body's slot this frame: a near miss (see [`near_miss`]) is worth a witness too, but a
+/// collision more.
+#[inline]
+fn remember_near(witness: &mut [Witness], witnessed: &mut Vec<u32>, p: &PairState) {
+    if witness[p.a as usize].partner == NO_WITNESS.partner {
+        remember(witness, witnessed, p);
+    }
+}
+
+/// Whether pair `p` was settled apart by the shape level (under the shape truth): its leaves
+/// overlap (`last` is a pair of leaves, indices from `leaves` on) and its stars do not touch.
+/// Such pairs are approaching or interlocked, and next frame their leaves most likely overlap
+/// again: with the leaf pair as a witness the pair goes straight to its shape test (two sphere
+/// tests) instead of a descent through two interpenetrating trees (hundreds). Under the leaf
+/// truth no separate pair has a pair of leaves as its last overlap.
+#[inline]
+fn near_miss(p: &PairState, leaves: Option<u16>) -> bool {
+    leaves.is_some_and(|leaves| {
+        p.status == PairStatus::Separate
+            && p.last[0] != NONE
+            && p.last[0] >= leaves
+            && p.last[1] >= leaves
+    })
+}
+
+/// The memo slots of the first `n` pairs in runs of `size`, one per run of pairs (empty slices
+/// under the leaf truth, which keeps none).
+fn memo_chunks(
+    memo_out: &mut [Memo],
+    shape: bool,
+    n: usize,
+    size: usize,
+) -> Box<dyn Iterator<Item = &mut [Memo]> + '_> {
+    if shape {
+        Box::new(memo_out[..n].chunks_mut(size))
+    } else {
+        Box::new(std::iter::repeat_with(|| -> &mut [Memo] { &mut [] }))
+    }
+}
+
+/// The first leaf's index for [`near_miss`] under the shape truth, `None` under the leaf truth.
+#[inline]
+fn near_leaves(tree: &SphereTree) -> Option<u16> {
+    (tree.truth() == Truth::Shape).then(|| tree.leaves().start as u16)
+}
+
 /// All candidate pairs of a frame and their traversal states.
 #[derive(Debug, Clone, Default)]
 pub struct NarrowPhase {
@@ -340,6 +388,9 @@ pub struct NarrowPhase {
     lane_arenas: Vec<Vec<[u16; 2]>>,
     /// Per run of [`Self::resolve_frame`], the pairs it found colliding.
     run_hits: Vec<Vec<u32>>,
+    /// Per run of [`Self::resolve_frame`], the pairs it found apart on the shape with their
+    /// leaves overlapping (see [`near_miss`]): witnesses too.
+    run_near: Vec<Vec<u32>>,
     /// Runs of `run_hits` that list this frame's colliding pairs: set by [`Self::resolve_frame`],
     /// 0 (unknown) after any other start of a frame.
     hit_runs: usize,
@@ -357,6 +408,17 @@ pub struct NarrowPhase {
     /// Test four children at a time even where the processor has eight-lane vectors (tests
     /// compare the two).
     four_lanes_only: bool,
+    /// Under the shape truth, the index of the first leaf of the tree the pairs were last
+    /// stepped with (see [`near_miss`]); `None` under the leaf truth, where no pair is a near
+    /// miss.
+    leaf_start: Option<u16>,
+    /// Last frame's near misses with their proofs, read by this frame's steps.
+    near: NearTable,
+    /// This frame's, built at its end and then swapped with `near`.
+    near_next: NearTable,
+    /// This frame's near misses as they are settled, index-parallel to `pairs` (only the
+    /// slots of near misses are meaningful; sized under the shape truth only).
+    memo_out: Vec<Memo>,
 }
 
 /// A pair of [`NarrowPhase::selection_marks`] that the selection did not reach.
@@ -414,12 +476,18 @@ impl NarrowPhase {
     /// that proved it; [`Self::step`] tries that leaf pair first next frame.
     pub fn remember_witnesses(&mut self, bodies: usize) {
         self.forget_witnesses(bodies);
-        for p in &self.pairs {
+        let leaves = self.leaf_start;
+        self.near_next.clear();
+        for (i, p) in self.pairs.iter().enumerate() {
             if p.status == PairStatus::Colliding {
                 remember(&mut self.witness, &mut self.witnessed, p);
+            } else if near_miss(p, leaves) {
+                remember_near(&mut self.witness, &mut self.witnessed, p);
+                self.near_next.insert(self.memo_out[i]);
             }
         }
         self.keep_witnessed_bounded();
+        self.keep_near();
     }
 
     /// End a frame whose pairs were not resolved by [`Self::resolve_frame`]: deem every open
@@ -432,18 +500,23 @@ impl NarrowPhase {
     /// after the budgeted work, in the tail a whole-frame budget must keep for them.
     pub fn close_frame(&mut self, bodies: usize) -> u32 {
         self.forget_witnesses(bodies);
+        self.near_next.clear();
         if self.run_hits.is_empty() {
             self.run_hits.push(Vec::new());
         }
         let listed = &mut self.run_hits[0];
         listed.clear();
         let mut deemed = 0;
+        let leaves = self.leaf_start;
         for (i, p) in self.pairs.iter_mut().enumerate() {
             if p.status.is_open() {
                 p.status = PairStatus::Deemed;
                 deemed += 1;
             } else if p.status == PairStatus::Colliding {
                 remember(&mut self.witness, &mut self.witnessed, p);
+            } else if near_miss(p, leaves) {
+                remember_near(&mut self.witness, &mut self.witnessed, p);
+                self.near_next.insert(self.memo_out[i]);
             }
             if p.status.is_collision() {
                 listed.push(i as u32);
@@ -453,6 +526,7 @@ impl NarrowPhase {
         if listed.capacity() > 4 * listed.len().max(ARENA_KEEP) {
             listed.shrink_to(2 * listed.len().max(ARENA_KEEP));
         }
+        self.keep_near();
         self.hit_runs = 1;
         self.keep_witnessed_bounded();
         deemed
@@ -471,6 +545,13 @@ impl NarrowPhase {
             self.witness.resize(bodies, NO_WITNESS);
         }
         self.witnessed.clear();
+    }
+
+    /// The near misses listed this frame become the ones the next frame reads
+    /// ([`crate::near_memo`]).
+    fn keep_near(&mut self) {
+        std::mem::swap(&mut self.near, &mut self.near_next);
+        self.near_next.clear();
     }
 
     /// Storage for one pathological frame's witnesses is not kept for good.
@@ -519,6 +600,20 @@ impl NarrowPhase {
         self.pairs.clear();
         // The colliding lists index the pairs just dropped.
         self.hit_runs = 0;
+        // Near misses are keyed by the old ids (a memo is a proof about a relative pose, so a
+        // stale one would still be sound, but it would be tried on the wrong pairs).
+        self.near.clear();
+    }
+
+    /// Remember which truth (and leaves) the pairs are stepped with, for the witnesses kept at
+    /// the frame's end ([`near_miss`]).
+    #[inline]
+    fn note_tree(&mut self, tree: &SphereTree) {
+        self.leaf_start = near_leaves(tree);
+        if self.leaf_start.is_some() && self.memo_out.len() < self.pairs.len() {
+            let n = self.pairs.len() + self.pairs.len() / 4;
+            self.memo_out.resize(n, Memo::EMPTY);
+        }
     }
 
     /// Whether pair `i` has a witness from last frame: its first step re-tests the leaf pair that
@@ -536,6 +631,7 @@ impl NarrowPhase {
     /// at the leaves, exactly as its full descent would have.
     #[inline]
     pub fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
+        self.note_tree(tree);
         self.lane().step(i, tree, world)
     }
 
@@ -559,6 +655,8 @@ impl NarrowPhase {
         self.frames_live = true;
         Lane {
             pairs: &mut self.pairs,
+            near: &self.near,
+            memo_out: &mut self.memo_out,
             frames: &mut self.frames,
             one_frame: false,
             wide: !self.four_lanes_only,
@@ -575,6 +673,7 @@ impl NarrowPhase {
     /// bit-identical to resolving the pairs one after another, whichever thread takes which run;
     /// below [`PARALLEL_MIN_PAIRS`] pairs, one thread is used.
     pub fn resolve_all(&mut self, tree: &SphereTree, world: &World, threads: usize) {
+        self.note_tree(tree);
         // The runs below rewrite the colliding lists; only `resolve_frame` keeps them.
         self.hit_runs = 0;
         // A pair already active keeps its list in the main arena: only a fresh frame splits.
@@ -639,6 +738,16 @@ impl NarrowPhase {
                 &self.pairs[i as usize],
             );
         }
+        self.near_next.clear();
+        for &i in self.run_near[..runs].iter().flatten() {
+            remember_near(
+                &mut self.witness,
+                &mut self.witnessed,
+                &self.pairs[i as usize],
+            );
+            self.near_next.insert(self.memo_out[i as usize]);
+        }
+        self.keep_near();
         self.keep_witnessed_bounded();
         tallies
     }
@@ -672,8 +781,13 @@ impl NarrowPhase {
         if self.run_hits.len() < run_count {
             self.run_hits.resize_with(run_count, Vec::new);
         }
+        if self.run_near.len() < run_count {
+            self.run_near.resize_with(run_count, Vec::new);
+        }
+        self.note_tree(tree);
         self.make_lanes(parts);
         let (witness, wide) = (&self.witness, !self.four_lanes_only);
+        let near_table = &self.near;
         let mut first_arena = std::mem::take(&mut self.arena);
         let candidates: Box<dyn Iterator<Item = &[(u32, u32)]>> = match fresh {
             Some(c) => Box::new(c.chunks(size)),
@@ -681,19 +795,26 @@ impl NarrowPhase {
         };
         type Run<'a, T> = (
             usize,
-            &'a mut [PairState],
+            (&'a mut [PairState], &'a mut [Memo]),
             &'a [(u32, u32)],
+            &'a mut Vec<u32>,
             &'a mut Vec<u32>,
             T,
         );
         let runs: Vec<Mutex<Run<'_, T>>> = self
             .pairs
             .chunks_mut(size)
+            .zip(memo_chunks(
+                &mut self.memo_out,
+                self.leaf_start.is_some(),
+                n,
+                size,
+            ))
             .zip(candidates)
-            .zip(self.run_hits.iter_mut())
+            .zip(self.run_hits.iter_mut().zip(self.run_near.iter_mut()))
             .enumerate()
-            .map(|(k, ((pairs, cands), hits))| {
-                Mutex::new((k * size, pairs, cands, hits, T::default()))
+            .map(|(k, (((pairs, memos), cands), (hits, near)))| {
+                Mutex::new((k * size, (pairs, memos), cands, hits, near, T::default()))
             })
             .collect();
         let next = AtomicUsize::new(0);
@@ -711,12 +832,15 @@ impl NarrowPhase {
                 let mut guard = run
                     .lock()
                     .unwrap_or_else(std::sync::PoisonError::into_inner);
-                let (base, pairs, cands, hits, acc) = &mut *guard;
+                let (base, (pairs, memos), cands, hits, near, acc) = &mut *guard;
                 let base = *base;
                 hits.clear();
+                near.clear();
                 let mut slot = [PairFrame::IDENTITY];
                 let mut lane = Lane {
                     pairs,
+                    near: near_table,
+                    memo_out: memos,
                     frames: &mut slot,
                     one_frame: true,
                     wide,
@@ -728,7 +852,7 @@ impl NarrowPhase {
                 lane.resolve_run(
                     cands,
                     base,
-                    hits,
+                    (hits, near),
                     tree,
                     world,
                     tally.map(|f| (f, &mut *acc)),
@@ -759,7 +883,7 @@ impl NarrowPhase {
                 .map(|run| {
                     run.into_inner()
                         .unwrap_or_else(std::sync::PoisonError::into_inner)
-                        .4
+                        .5
                 })
                 .collect(),
             None => Vec::new(),
@@ -810,6 +934,7 @@ impl NarrowPhase {
         select: &(dyn Fn(&PairState) -> bool + Sync),
         go_on: &mut dyn FnMut(u64) -> bool,
     ) -> u32 {
+        self.note_tree(tree);
         let n = prefix.min(self.pairs.len());
         let parts = if n < self.parallel_min.unwrap_or(PARALLEL_MIN_PAIRS) {
             1
@@ -847,9 +972,17 @@ impl NarrowPhase {
         let size = (n / (parts * RUNS_PER_THREAD)).clamp(MIN_RUN, MAX_RUN);
         self.make_lanes(parts);
         let (witness, wide) = (&self.witness, !self.four_lanes_only);
+        let near_table = &self.near;
         let mut first_arena = std::mem::take(&mut self.arena);
-        let runs: Vec<Mutex<(&mut [PairState], &mut [u8])>> = self.pairs[..n]
+        type Sel<'a> = ((&'a mut [PairState], &'a mut [Memo]), &'a mut [u8]);
+        let runs: Vec<Mutex<Sel<'_>>> = self.pairs[..n]
             .chunks_mut(size)
+            .zip(memo_chunks(
+                &mut self.memo_out,
+                self.leaf_start.is_some(),
+                n,
+                size,
+            ))
             .zip(self.marks.chunks_mut(size))
             .map(Mutex::new)
             .collect();
@@ -867,10 +1000,12 @@ impl NarrowPhase {
                 let mut guard = run
                     .lock()
                     .unwrap_or_else(std::sync::PoisonError::into_inner);
-                let (pairs, marks) = &mut *guard;
+                let ((pairs, memos), marks) = &mut *guard;
                 let mut slot = [PairFrame::IDENTITY];
                 let mut lane = Lane {
                     pairs,
+                    near: near_table,
+                    memo_out: memos,
                     frames: &mut slot,
                     one_frame: true,
                     wide,
@@ -941,6 +1076,7 @@ impl NarrowPhase {
 
     /// Step pair `i` until it is resolved (no budget).
     pub fn resolve_fully(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
+        self.note_tree(tree);
         self.lane().resolve_pair(i, tree, world)
     }
 
@@ -1076,6 +1212,11 @@ impl NarrowPhase {
 /// disjoint runs can step in parallel ([`NarrowPhase::resolve_all`]).
 struct Lane<'a> {
     pairs: &'a mut [PairState],
+    /// Last frame's near misses (shape truth).
+    near: &'a NearTable,
+    /// Where a near miss settled this frame leaves its memo, index-parallel to `pairs` (empty
+    /// under the leaf truth).
+    memo_out: &'a mut [Memo],
     frames: &'a mut [PairFrame],
     /// Pairs are resolved one at a time, each in one go: every pair's frame is `frames[0]`.
     one_frame: bool,
@@ -1131,7 +1272,7 @@ impl Lane<'_> {
         &mut self,
         cands: &[(u32, u32)],
         base: usize,
-        hits: &mut Vec<u32>,
+        hits: (&mut Vec<u32>, &mut Vec<u32>),
         tree: &SphereTree,
         world: &World,
         mut tally: Option<(Tally<'_, T>, &mut T)>,
@@ -1155,12 +1296,13 @@ impl Lane<'_> {
         kernel: K,
         cands: &[(u32, u32)],
         base: usize,
-        hits: &mut Vec<u32>,
+        (hits, near): (&mut Vec<u32>, &mut Vec<u32>),
         tree: &SphereTree,
         world: &World,
         tally: &mut Option<(Tally<'_, T>, &mut T)>,
     ) {
         let n = self.pairs.len();
+        let leaves = near_leaves(tree);
         for start in (0..n).step_by(TALLY_BLOCK) {
             let end = (start + TALLY_BLOCK).min(n);
             for i in start..end {
@@ -1174,6 +1316,8 @@ impl Lane<'_> {
                 }
                 if self.pairs[i].status == PairStatus::Colliding {
                     hits.push((base + i) as u32);
+                } else if near_miss(&self.pairs[i], leaves) {
+                    near.push((base + i) as u32);
                 }
             }
             if let Some((f, acc)) = tally {
@@ -1200,6 +1344,35 @@ impl Lane<'_> {
             let (a, b) = (p.a as usize, p.b as usize);
             let root = tree.sphere(0);
             let mut framed = false;
+            // A near miss of last frame whose roots still touch (a root test settles the rest
+            // for less): its proof may still hold; if not, its stars are
+            // tested at once. Apart, the pair is settled whatever its leaves do (the shape
+            // truth is leaves and stars; stars apart is enough). Touching, it goes down the
+            // leaves as any pair does and ends at the shape level again (a few hundred pairs a
+            // frame at N = 10,000, most of them with a witness).
+            let d = LVec3::from((world.position[b] - world.position[a]).as_vec3());
+            let roots_touch = d.length_squared() <= (root.w + root.w) * (root.w + root.w);
+            if let Some(m) = self.near.get(p.a, p.b).filter(|_| roots_touch) {
+                let pose = shape_pose(world, a, b);
+                let clearance = f64::from(m.clearance);
+                let motion = m.motion(&pose, tree.geometry().radius);
+                let proof = if motion < clearance {
+                    *self.tests += 1;
+                    Some(clearance - motion)
+                } else {
+                    *self.tests += SHAPE_TEST_COST;
+                    tree.geometry().intersects_or_bound(&pose)
+                };
+                if let Some(clearance) = proof {
+                    let st = &mut self.pairs[i];
+                    st.last = m.leaves;
+                    st.levels = [depth, depth];
+                    if let Some(out) = self.memo_out.get_mut(i) {
+                        *out = Memo::new(p.a, p.b, m.leaves, clearance, &pose);
+                    }
+                    return resolve(st, PairStatus::Separate, depth);
+                }
+            }
             if let Some(w) = self.witness.get(a).filter(|w| w.partner == p.b) {
                 let frame = PairFrame::new(world, a, b);
                 let k = self.frame_slot(i);
@@ -1243,7 +1416,13 @@ impl Lane<'_> {
             return StepOutcome::Active;
         }
         if shape_pending(&p, depth) {
-            return shape_step(&mut self.pairs[i], self.tests, tree, world);
+            return shape_step(
+                &mut self.pairs[i],
+                self.tests,
+                self.memo_out.get_mut(i),
+                tree,
+                world,
+            );
         }
         // A to its leaves against B's root first, then B (see `next_levels`).
         let (descend_a, new_levels) = next_levels(p.levels, depth);
@@ -1293,7 +1472,13 @@ impl Lane<'_> {
         let depth = tree.depth() as u8;
         let p = self.pairs[i];
         if shape_pending(&p, depth) {
-            return shape_step(&mut self.pairs[i], self.tests, tree, world);
+            return shape_step(
+                &mut self.pairs[i],
+                self.tests,
+                self.memo_out.get_mut(i),
+                tree,
+                world,
+            );
         }
         let frame = self.frames[self.frame_slot(i)];
         let [cur, next] = &mut *self.scratch;
@@ -1343,7 +1528,7 @@ impl Lane<'_> {
             st.levels = levels;
             st.last = last;
             if status == PairStatus::Colliding && tree.truth() == Truth::Shape {
-                return shape_step(st, self.tests, tree, world);
+                return shape_step(st, self.tests, self.memo_out.get_mut(i), tree, world);
             }
             return resolve(st, status, level);
         }
@@ -1710,21 +1895,29 @@ fn shape_pending(p: &PairState, depth: u8) -> bool {
 }
 
 /// The shape level: test the two stars themselves (docs/DESIGN.md "Exact answer").
+///
+/// A pair found apart leaves its proof in `memo` ([`crate::near_memo`]): next frame it may be
+/// settled by its motion alone.
 #[inline(never)]
 fn shape_step(
     st: &mut PairState,
     tests: &mut u64,
+    memo: Option<&mut Memo>,
     tree: &SphereTree,
     world: &World,
 ) -> StepOutcome {
     *tests += SHAPE_TEST_COST;
     let pose = shape_pose(world, st.a as usize, st.b as usize);
-    let status = if tree.geometry().intersects(&pose) {
-        PairStatus::Colliding
-    } else {
-        PairStatus::Separate
-    };
-    resolve(st, status, tree.depth() as u8)
+    let depth = tree.depth() as u8;
+    match tree.geometry().intersects_or_bound(&pose) {
+        None => resolve(st, PairStatus::Colliding, depth),
+        Some(clearance) => {
+            if let Some(m) = memo {
+                *m = Memo::new(st.a, st.b, st.last, clearance, &pose);
+            }
+            resolve(st, PairStatus::Separate, depth)
+        }
+    }
 }
 
 /// Body `b`'s pose in body `a`'s frame, in f64 from the bodies' orientations and positions: the
@@ -2209,6 +2402,59 @@ mod tests {
         );
         let pairs = bp.update(&world.position).to_vec();
         (tree, world, pairs)
+    }
+
+    /// Memory never changes an answer: under the shape truth, frame after frame of a running
+    /// scene, a narrow phase that keeps its witnesses and near misses (resolved in one call on
+    /// two threads, then stepped pair by pair under a closing frame) settles every pair as a
+    /// fresh one does, and the near misses' proofs do save tests.
+    #[test]
+    fn near_miss_memory_gives_the_memoryless_answers() {
+        let mut cfg = crate::SimConfig::default();
+        cfg.scene = SceneConfig::paper(1_500, 9);
+        cfg.budget = crate::BudgetSpec::Exact;
+        let mut sim = crate::Simulation::new(cfg).expect("valid");
+        let tree = sim.tree().clone();
+        assert_eq!(tree.truth(), Truth::Shape);
+        let (mut kept, mut stepped) = (NarrowPhase::default(), NarrowPhase::default());
+        stepped.parallel_min = Some(1);
+        let (mut saved, mut stepped_saved, mut near) = (0i64, 0i64, 0);
+        for f in 0..40 {
+            sim.step(None, &crate::FrozenClock);
+            let (world, pairs) = (sim.world(), sim.candidate_pairs());
+            let mut fresh = NarrowPhase::default();
+            fresh.resolve_frame(pairs, &tree, world, 1);
+            kept.resolve_frame(pairs, &tree, world, 2);
+            stepped.reset(pairs);
+            for i in 0..pairs.len() {
+                while stepped.pairs[i].status.is_open() {
+                    stepped.step(i, &tree, world);
+                }
+            }
+            stepped.close_frame(world.len());
+            for (i, p) in fresh.pairs.iter().enumerate() {
+                let want = p.status == PairStatus::Colliding;
+                assert_eq!(
+                    kept.pairs[i].status == PairStatus::Colliding,
+                    want,
+                    "frame {f}"
+                );
+                assert_eq!(
+                    stepped.pairs[i].status == PairStatus::Colliding,
+                    want,
+                    "frame {f}"
+                );
+            }
+            if f > 5 {
+                saved += fresh.tests as i64 - kept.tests as i64;
+                stepped_saved += fresh.tests as i64 - stepped.tests as i64;
+            }
+            near = near.max(kept.near.len());
+        }
+        assert!(
+            near > 50 && saved > 0 && stepped_saved > 0,
+            "near misses {near}, tests saved {saved} and stepped {stepped_saved}"
+        );
     }
 
     /// A budgeted frame's room for pair frames is made before its work, with headroom, so that

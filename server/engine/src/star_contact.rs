@@ -206,32 +206,52 @@ impl StarGeometry {
     /// Early-outs in order of cost: the two bounding spheres, the cores, core against spike in
     /// closed form, then spike against spike by GJK where bounding spheres and capsules allow.
     pub fn intersects(&self, pose: &Pose) -> bool {
+        self.intersects_or_bound(pose).is_none()
+    }
+
+    /// [`Self::intersects`], and when the stars are apart a proven lower bound on their
+    /// distance (`Some(bound)`, `bound >= 0`): the least, over the part pairs, of what each test
+    /// proved, whether the exact distance of a closed form, GJK's separating plane or a bounding
+    /// sphere's or capsule's clearance. `None` when they touch. A pair that keeps this bound
+    /// across frames is apart for as long as its relative motion stays below it.
+    pub fn intersects_or_bound(&self, pose: &Pose) -> Option<f64> {
         let t = pose.translation;
         let d2 = t.length_squared();
         let reach = 2.0 * self.radius + self.eps;
         if d2 > reach * reach {
-            return false;
+            return Some(d2.sqrt() - 2.0 * self.radius);
         }
         let core_reach = 2.0 * self.core + self.eps;
         if d2 <= core_reach * core_reach {
-            return true;
+            return None;
         }
+        let mut lower = d2.sqrt() - 2.0 * self.core;
         let axes_b = b_axes(pose);
         let (rb, off) = (self.bound_radius, self.bound_offset);
         // Spikes of A against B's core, and of B against A's core.
         let core_bound = rb + self.core + self.eps;
         for k in 0..6 {
             let ca = AXES[k] * off;
-            if (ca - t).length_squared() <= core_bound * core_bound
-                && point_cone(t, &self.cone(DVec3::ZERO, AXES[k])).0 <= self.core + self.eps
-            {
-                return true;
+            let da = (ca - t).length_squared();
+            if da <= core_bound * core_bound {
+                let d = point_cone(t, &self.cone(DVec3::ZERO, AXES[k])).0 - self.core;
+                if d <= self.eps {
+                    return None;
+                }
+                lower = lower.min(d);
+            } else {
+                lower = lower.min(da.sqrt() - rb - self.core);
             }
             let cb = t + axes_b[k] * off;
-            if cb.length_squared() <= core_bound * core_bound
-                && point_cone(DVec3::ZERO, &self.cone(t, axes_b[k])).0 <= self.core + self.eps
-            {
-                return true;
+            let db = cb.length_squared();
+            if db <= core_bound * core_bound {
+                let d = point_cone(DVec3::ZERO, &self.cone(t, axes_b[k])).0 - self.core;
+                if d <= self.eps {
+                    return None;
+                }
+                lower = lower.min(d);
+            } else {
+                lower = lower.min(db.sqrt() - rb - self.core);
             }
         }
         // Spikes against spikes: only those whose bounding sphere reaches the other star.
@@ -242,35 +262,44 @@ impl StarGeometry {
         let mut nb = 0;
         for axis in axes_b {
             let cb = t + axis * off;
-            if cb.length_squared() <= star_bound * star_bound {
+            let db = cb.length_squared();
+            if db <= star_bound * star_bound {
                 near_b[nb] = axis;
                 nb += 1;
+            } else {
+                // This spike is farther from all of A than its bounding sphere allows.
+                lower = lower.min(db.sqrt() - rb - self.radius);
             }
-        }
-        if nb == 0 {
-            return false;
         }
         for axis_a in AXES {
             let ca = axis_a * off;
-            if (ca - t).length_squared() > star_bound * star_bound {
+            let da = (ca - t).length_squared();
+            if da > star_bound * star_bound {
+                lower = lower.min(da.sqrt() - rb - self.radius);
                 continue;
             }
             for &axis_b in &near_b[..nb] {
                 let cb = t + axis_b * off;
-                if (ca - cb).length_squared() > pair_bound * pair_bound {
+                let dab = (ca - cb).length_squared();
+                if dab > pair_bound * pair_bound {
+                    lower = lower.min(dab.sqrt() - 2.0 * rb);
                     continue;
                 }
                 let (pa, pb) = (axis_a * self.radius, t + axis_b * self.radius);
-                if segment_distance_squared(DVec3::ZERO, pa, t, pb) > capsule * capsule {
+                let seg = segment_distance_squared(DVec3::ZERO, pa, t, pb);
+                if seg > capsule * capsule {
+                    lower = lower.min(seg.sqrt() - 2.0 * self.base);
                     continue;
                 }
                 let (ka, kb) = (self.cone(DVec3::ZERO, axis_a), self.cone(t, axis_b));
-                if gjk(&ka, &kb, self.eps, true).touching {
-                    return true;
+                let g = gjk(&ka, &kb, self.eps, true);
+                if g.touching {
+                    return None;
                 }
+                lower = lower.min(g.lower);
             }
         }
-        false
+        Some(lower.max(0.0))
     }
 
     /// How star B at `pose` stands against star A at the origin: the deepest contact of any part
@@ -290,12 +319,21 @@ impl StarGeometry {
                 (centre + axes[part - 1] * off, self.bound_radius)
             }
         };
+        // Lower bounds: the bounding spheres' separation, and for two spikes the separation of
+        // the capsules around them (axis segment plus base radius), which is much tighter.
         let mut order = [(0.0f64, 0u8, 0u8); 49];
         for i in 0..7 {
             let (ca, ra) = bound(DVec3::ZERO, &AXES, i);
             for j in 0..7 {
                 let (cb, rb) = bound(t, &axes_b, j);
-                order[i * 7 + j] = ((cb - ca).length() - ra - rb, i as u8, j as u8);
+                let mut lower = (cb - ca).length() - ra - rb;
+                if i > 0 && j > 0 && lower < self.radius {
+                    let (pa, pb) = (AXES[i - 1] * self.radius, t + axes_b[j - 1] * self.radius);
+                    let capsules =
+                        segment_distance_squared(DVec3::ZERO, pa, t, pb).sqrt() - 2.0 * self.base;
+                    lower = lower.max(capsules);
+                }
+                order[i * 7 + j] = (lower, i as u8, j as u8);
             }
         }
         order.sort_unstable_by(|x, y| x.0.total_cmp(&y.0).then((x.1, x.2).cmp(&(y.1, y.2))));
@@ -522,6 +560,8 @@ struct Gjk {
     simplex: [Vertex; 4],
     weights: [f64; 4],
     len: usize,
+    /// A proven lower bound on the distance when apart (0 when touching).
+    lower: f64,
 }
 
 /// GJK distance between two cones. With `boolean`, stops as soon as a separating axis is found.
@@ -542,6 +582,7 @@ fn gjk(ka: &Cone, kb: &Cone, eps: f64, boolean: bool) -> Gjk {
         ],
         weights: [1.0, 0.0, 0.0, 0.0],
         len: 1,
+        lower: 0.0,
     };
     for _ in 0..MAX_ITERATIONS {
         let v = g.v;
@@ -555,11 +596,18 @@ fn gjk(ka: &Cone, kb: &Cone, eps: f64, boolean: bool) -> Gjk {
         // The plane through w normal to v bounds A - B away from the origin: a distance of at
         // least vw / |v| is proven.
         if boolean && vw > eps * vv.sqrt() {
+            g.lower = vw / vv.sqrt();
             return g;
         }
-        if vv - vw <= 1e-12 * vv || g.simplex[..g.len].iter().any(|s| s.w == w.w) {
+        // Converged when the proven lower bound vw / |v| is within 1e-9 of the upper bound |v|,
+        // relatively or in absolute terms (the touching tolerance): on the cones' curved rims
+        // GJK converges only linearly, and 1e-12 took tens of iterations more.
+        if vv - vw <= (1e-9 * vv).max(eps * vv.sqrt())
+            || g.simplex[..g.len].iter().any(|s| s.w == w.w)
+        {
             // Converged: no vertex gets nearer the origin.
             g.touching = vv.sqrt() <= eps;
+            g.lower = (vw / vv.sqrt()).max(0.0);
             return g;
         }
         g.simplex[g.len] = w;
