@@ -46,6 +46,38 @@ function deviation(part, inside) {
   return { lo, hi };
 }
 
+const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+
+/** Where the ray from the centre along unit `u` crosses triangle abc: its distance, or null. */
+function crossing(u, a, b, c) {
+  const e1 = sub(b, a), e2 = sub(c, a);
+  const p = cross(u, e2);
+  const det = dot(e1, p);
+  if (Math.abs(det) < 1e-15) return null;
+  const s = [-a[0], -a[1], -a[2]];
+  const v = dot(s, p) / det;
+  if (v < 0 || v > 1) return null;
+  const q = cross(s, e1);
+  const w = dot(u, q) / det;
+  if (w < 0 || v + w > 1) return null;
+  const t = dot(e2, q) / det;
+  return t > 0 ? t : null;
+}
+
+/** Signed distance from p to the solid cone of base radius b at the centre, apex at h along axis. */
+function coneDistance(p, axis, b, h) {
+  const a = dot(p, axis);
+  const r = norm(p.map((x, d) => x - a * axis[d]));
+  // In the half-plane (a, r): the base edge from (0, 0) to (0, b) and the slant from (0, b) to (h, 0).
+  const base = r <= b ? Math.abs(a) : Math.hypot(a, r - b);
+  const len = Math.hypot(h, b);
+  const k = Math.min(1, Math.max(0, (a * h - (r - b) * b) / (len * len)));
+  const slant = Math.hypot(a - k * h, r - b + k * b);
+  const inside = a >= 0 && r <= b * (1 - a / h);
+  return inside ? -Math.min(base, slant) : Math.min(base, slant);
+}
+
 describe("the drawn star", () => {
   for (const radius of [0.2, 1.5]) {
     test(`is within 0.005R of the exact star (R = ${radius})`, () => {
@@ -89,6 +121,27 @@ describe("the drawn star", () => {
       console.log(`# R = ${radius}: ${star.triangles(g)} triangles, ${g.attributes.position.count} vertices per body; worst deviation: ${report.join(", ")}`);
     });
   }
+
+  test("has no hole: along every direction from the centre its outer surface is the exact one's, within 0.005R", () => {
+    const dims = { radius: 1, coreRadius: 0.3, spikeBaseRadius: 0.25 };
+    const tris = star.starParts(dims).flatMap((part) => [...triangleCorners(part)]);
+    const axes = [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]];
+    const tol = star.MAX_DEVIATION;
+    const rays = 4000;
+    for (let i = 0; i < rays; i++) {
+      // Fibonacci directions, evenly over the sphere.
+      const z = 1 - (2 * i + 1) / rays, rho = Math.sqrt(1 - z * z), phi = i * Math.PI * (3 - Math.sqrt(5));
+      const u = [rho * Math.cos(phi), rho * Math.sin(phi), z];
+      let out = 0;
+      for (const [a, b, c] of tris) out = Math.max(out, crossing(u, a, b, c) ?? 0);
+      assert.ok(out > 0, `nothing drawn along ${u}`);
+      const q = u.map((x) => x * out);
+      const parts = [norm(q) - dims.coreRadius, ...axes.map((e) => coneDistance(q, e, dims.spikeBaseRadius, dims.radius))];
+      // On the surface of the union: outside (or within tol of) every part and on (within tol of) one.
+      assert.ok(Math.min(...parts) <= tol, `along ${u} the star is drawn ${Math.min(...parts)}R too far out`);
+      assert.ok(Math.min(...parts) >= -tol, `along ${u} the outer surface is ${-Math.min(...parts)}R inside: a hole`);
+    }
+  });
 
   test("the bound bites: the 20-face core and 6-sided spikes drawn before miss it", () => {
     const dims = { radius: 1, coreRadius: 0.3, spikeBaseRadius: 0.25 };
