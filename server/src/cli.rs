@@ -13,7 +13,7 @@ use clap::{Parser, ValueEnum};
 use foveal_engine::broad_phase::BroadPhaseKind;
 use foveal_engine::{
     BudgetSpec, ConfigError, EccentricityUnit, PerceptualFunction, PerceptualModel, SchedulerKind,
-    SimConfig,
+    SimConfig, Truth,
 };
 
 use crate::auth::{Role, Tokens};
@@ -75,6 +75,12 @@ pub struct Cli {
     /// phase, e.g. `20000tests`), or `<f>x` (fraction of the exact cost, e.g. `0.3x`).
     #[arg(long, env = "FOVEAL_BUDGET", default_value = DEFAULT_BUDGET)]
     pub budget: BudgetArg,
+    /// What "colliding" means: `shape` (the drawn stars, core ball and six cones, touch) or
+    /// `leaf-spheres` (a leaf sphere of one body's sphere tree overlaps one of the other's: the
+    /// paper's definition, for its replication; the leaves overshoot the star near the spike
+    /// tips, so bodies may bounce across a visible gap).
+    #[arg(long, env = "FOVEAL_TRUTH", default_value = "shape", value_parser = parse_truth)]
+    pub truth: Truth,
     /// Frames per second the loop runs at.
     #[arg(long, env = "FOVEAL_FRAME_RATE", default_value_t = 60.0)]
     pub frame_rate: f64,
@@ -207,6 +213,13 @@ fn default_threads() -> u32 {
     std::thread::available_parallelism().map_or(1, |n| n.get().min(64) as u32)
 }
 
+fn parse_truth(s: &str) -> Result<Truth, String> {
+    Truth::from_name(s).ok_or_else(|| {
+        let names: Vec<_> = Truth::ALL.iter().map(|t| t.name()).collect();
+        format!("unknown truth `{s}`; one of: {}", names.join(", "))
+    })
+}
+
 fn parse_scheduler(s: &str) -> Result<SchedulerKind, String> {
     SchedulerKind::from_name(s).ok_or_else(|| {
         let names: Vec<_> = SchedulerKind::ALL.iter().map(|k| k.name()).collect();
@@ -303,6 +316,7 @@ impl Cli {
         sim.scene.bodies = self.bodies;
         sim.scene.seed = self.seed;
         sim.scene.depth = self.depth;
+        sim.scene.truth = self.truth;
         sim.scheduler = self.scheduler;
         sim.threads = self.threads;
         sim.broad_phase = self.broad_phase;
@@ -518,10 +532,12 @@ mod tests {
             "--schedule-model=f3:1,2,4,20,100:px",
             "--log-format=json",
             "--fovea-first",
+            "--truth=leaf-spheres",
         ])
         .expect("parse");
         let c = cli.server_config().expect("valid");
         assert_eq!(c.sim.scene.bodies, 10_000);
+        assert_eq!(c.sim.scene.truth, Truth::LeafSpheres);
         assert!(c.sim.fovea_first);
         assert_eq!(c.sim.scheduler, SchedulerKind::RoundRobin);
         assert_eq!(c.sim.budget, BudgetSpec::WallMs(2.5));
@@ -531,6 +547,22 @@ mod tests {
             PerceptualFunction::F3 { e2, .. } if e2 == 100.0
         ));
         assert_eq!(cli.log_format, LogFormat::Json);
+    }
+
+    #[test]
+    fn a_bad_truth_names_the_flag_and_the_accepted_values() {
+        let e = Cli::try_parse_from(["foveal-server", "--truth", "spheres"])
+            .expect_err("not a truth")
+            .to_string();
+        assert!(e.contains("--truth"), "{e}");
+        assert!(e.contains("spheres"), "{e}");
+        assert!(e.contains("shape, leaf-spheres"), "{e}");
+        let help = Cli::try_parse_from(["foveal-server", "--help"])
+            .expect_err("help exits")
+            .to_string();
+        assert!(help.contains("--truth"), "{help}");
+        assert!(help.contains("leaf-spheres"), "{help}");
+        assert!(help.contains("[default: shape]"), "{help}");
     }
 
     #[test]

@@ -5,9 +5,10 @@
 //! set oneof replaces the whole variant.
 
 use foveal_engine::math::Vec3;
+use foveal_engine::shape::Star;
 use foveal_engine::{
     BudgetSpec, ConfigError, EccentricityUnit, FrameReport, PerceptualFunction, PerceptualModel,
-    SchedulerKind, SimConfig, Simulation,
+    SchedulerKind, SimConfig, Simulation, Truth,
 };
 use foveal_proto::pb;
 
@@ -48,6 +49,41 @@ pub fn scheduler_from_pb(raw: i32) -> Result<Option<SchedulerKind>, ConfigError>
         pb::Scheduler::ExpectedGain => Some(SchedulerKind::ExpectedGain),
         pb::Scheduler::Priced => Some(SchedulerKind::Priced),
     })
+}
+
+/// Engine truth → protocol enum.
+pub fn truth_to_pb(t: Truth) -> pb::Truth {
+    match t {
+        Truth::Shape => pb::Truth::Shape,
+        Truth::LeafSpheres => pb::Truth::LeafSpheres,
+    }
+}
+
+/// Protocol enum → engine truth; `None` for "unspecified" (keep the current one). The error
+/// carries the engine's name of the field, as validation does for the other scene fields.
+pub fn truth_from_pb(raw: i32) -> Result<Option<Truth>, ConfigError> {
+    let t = pb::Truth::try_from(raw).map_err(|_| {
+        invalid(
+            "scene.truth",
+            raw,
+            "must be a Truth enum value: 0 (unspecified, keep), 1 (TRUTH_SHAPE) or 2 (TRUTH_LEAF_SPHERES)",
+        )
+    })?;
+    Ok(match t {
+        pb::Truth::Unspecified => None,
+        pb::Truth::Shape => Some(Truth::Shape),
+        pb::Truth::LeafSpheres => Some(Truth::LeafSpheres),
+    })
+}
+
+/// The star of bounding radius `radius` (GetScene's `star`).
+pub fn star_to_pb(radius: f64) -> pb::StarShape {
+    let s = Star::new(radius);
+    pb::StarShape {
+        radius: s.radius,
+        core_radius: s.core_radius,
+        spike_base_radius: s.spike_base_radius,
+    }
 }
 
 /// Engine budget → protocol message.
@@ -176,6 +212,7 @@ pub fn scene_config_to_pb(c: &SimConfig, frame_rate_hz: f64) -> pb::SceneConfig 
             diagonal_in: c.display.diagonal_in,
             viewing_distance_cm: c.display.viewing_distance_cm,
         }),
+        truth: truth_to_pb(s.truth) as i32,
     }
 }
 
@@ -211,6 +248,9 @@ pub fn merge_scene_config(
     s.min_speed = pick_f64(s.min_speed, req.min_speed);
     s.max_speed = pick_f64(s.max_speed, req.max_speed);
     s.max_spin = pick_f64(s.max_spin, req.max_spin);
+    if let Some(t) = truth_from_pb(req.truth)? {
+        s.truth = t;
+    }
     if let Some(k) = scheduler_from_pb(req.scheduler)? {
         c.scheduler = k;
     }
@@ -269,6 +309,15 @@ pub fn merge_masked(
             "min_speed" => s.min_speed = req.min_speed,
             "max_speed" => s.max_speed = req.max_speed,
             "max_spin" => s.max_spin = req.max_spin,
+            "truth" => {
+                s.truth = truth_from_pb(req.truth)?.ok_or_else(|| {
+                    invalid(
+                        "scene.truth",
+                        "TRUTH_UNSPECIFIED",
+                        "must name a truth when listed in update_mask",
+                    )
+                })?;
+            }
             "scheduler" => {
                 c.scheduler = scheduler_from_pb(req.scheduler)?.ok_or_else(|| {
                     invalid(
@@ -357,7 +406,8 @@ pub fn changed_fields(before: &pb::SceneConfig, after: &pb::SceneConfig) -> Vec<
         measure_model,
         audit,
         frame_rate_hz,
-        display
+        display,
+        truth
     );
     changed
 }
@@ -408,6 +458,7 @@ pub fn scene_description(sim: &Simulation, frame_rate_hz: f64) -> pb::SceneDescr
             fov_y_deg: viewer.fov_y_deg,
             aspect: f64::from(viewer.display.width_px) / f64::from(viewer.display.height_px),
         }),
+        star: Some(star_to_pb(cfg.scene.shape_radius)),
     }
 }
 
@@ -659,6 +710,81 @@ mod tests {
             }),
             Err("measure_model")
         );
+    }
+
+    #[test]
+    fn truth_goes_both_ways_unspecified_keeps_it_and_out_of_range_is_refused() {
+        assert_eq!(truth_from_pb(pb::Truth::Unspecified as i32), Ok(None));
+        for t in Truth::ALL {
+            assert_eq!(truth_from_pb(truth_to_pb(t) as i32), Ok(Some(t)));
+            let mut c = SimConfig::default();
+            c.scene.truth = t;
+            let pbc = scene_config_to_pb(&c, 60.0);
+            assert_eq!(pbc.truth, truth_to_pb(t) as i32);
+            let (back, _) = merge_scene_config(&SimConfig::default(), 60.0, &pbc).expect("valid");
+            assert_eq!(back.scene.truth, t);
+        }
+        assert_eq!(
+            scene_config_to_pb(&SimConfig::default(), 60.0).truth,
+            pb::Truth::Shape as i32,
+            "the default is the drawn shape"
+        );
+
+        let leaf = pb::SceneConfig {
+            truth: pb::Truth::LeafSpheres as i32,
+            ..Default::default()
+        };
+        let c = SimConfig::default();
+        let (m, _) = merge_scene_config(&c, 60.0, &leaf).expect("valid");
+        assert_eq!(m.scene.truth, Truth::LeafSpheres);
+        let changed = changed_fields(&scene_config_to_pb(&c, 60.0), &scene_config_to_pb(&m, 60.0));
+        assert_eq!(changed, ["truth"]);
+        let (kept, _) = merge_scene_config(&m, 60.0, &pb::SceneConfig::default()).expect("valid");
+        assert_eq!(kept.scene.truth, Truth::LeafSpheres, "unspecified keeps it");
+
+        let paths = ["truth".to_owned()];
+        let shape = pb::SceneConfig {
+            truth: pb::Truth::Shape as i32,
+            ..Default::default()
+        };
+        let (masked, _) = merge_masked(&m, 60.0, &shape, &paths).expect("valid");
+        assert_eq!(masked.scene.truth, Truth::Shape);
+        let e = merge_masked(&m, 60.0, &pb::SceneConfig::default(), &paths)
+            .expect_err("a listed truth must be named");
+        assert_eq!(e.field, "scene.truth");
+
+        for raw in [7, -1, 3] {
+            let bad = pb::SceneConfig {
+                truth: raw,
+                ..Default::default()
+            };
+            let e = merge_scene_config(&c, 60.0, &bad).expect_err("out of range");
+            assert_eq!(
+                (e.field, e.value.as_str()),
+                ("scene.truth", raw.to_string().as_str())
+            );
+            assert!(e.expected.contains("TRUTH_LEAF_SPHERES"), "{e}");
+            let e = merge_masked(&c, 60.0, &bad, &paths).expect_err("out of range");
+            assert_eq!(e.field, "scene.truth");
+        }
+    }
+
+    #[test]
+    fn the_scene_description_carries_the_truth_and_the_star() {
+        let mut c = SimConfig::default();
+        c.scene.bodies = 20;
+        c.scene.shape_radius = 0.5;
+        c.scene.truth = Truth::LeafSpheres;
+        let sim = Simulation::new(c).expect("valid");
+        let d = scene_description(&sim, 60.0);
+        assert_eq!(
+            d.config.expect("config").truth,
+            pb::Truth::LeafSpheres as i32
+        );
+        let star = d.star.expect("star");
+        assert_eq!(star.radius, 0.5);
+        assert!((star.core_radius - 0.15).abs() < 1e-12, "{star:?}");
+        assert!((star.spike_base_radius - 0.125).abs() < 1e-12, "{star:?}");
     }
 
     #[test]

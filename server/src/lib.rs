@@ -159,6 +159,7 @@ pub async fn run(
     tracing::info!(
         %addr,
         bodies = config.sim.scene.bodies,
+        truth = config.sim.scene.truth.name(),
         scheduler = config.sim.scheduler.name(),
         budget = ?config.sim.budget,
         frame_rate_hz = rate,

@@ -335,6 +335,33 @@ mod tests {
     }
 
     #[test]
+    fn the_header_says_which_truth_the_frames_were_decided_by() {
+        let (entered, _) = mpsc::channel();
+        let (_, release) = mpsc::channel();
+        let sink = Stall {
+            bytes: Arc::default(),
+            hold: Arc::default(),
+            entered,
+            release: Arc::new(Mutex::new(release)),
+        };
+        let mut config = ServerConfig::default();
+        config.sim.scene.truth = foveal_engine::Truth::LeafSpheres;
+        let rec = Recorder::over(sink.clone(), Path::new("test"), &header(&config), 8)
+            .expect("header written");
+        rec.finish();
+        let bytes = sink
+            .bytes
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clone();
+        let first = bytes.split(|&b| b == b'\n').next().expect("a header line");
+        let first = String::from_utf8_lossy(first);
+        assert!(first.contains(r#""truth":"leaf-spheres""#), "{first}");
+        let s = foveal_session::Session::read(bytes.as_slice()).expect("a complete session");
+        assert_eq!(s.header.sim.scene.truth, foveal_engine::Truth::LeafSpheres);
+    }
+
+    #[test]
     fn a_stalled_writer_drops_and_counts_records_instead_of_blocking() {
         let (entered_tx, entered) = mpsc::channel();
         let (release, release_rx) = mpsc::channel();

@@ -12,7 +12,8 @@
 //! - `tests/validation.rs`: bad samples, oversize batches, bad Configure.
 //! - `tests/scheduling.rs`: gaze-steered scheduling under a tight budget; the wall-clock budget.
 //! - `tests/robustness.rs`: vanishing clients, many subscribers, shutdown.
-//! - `tests/services.rs`: health, reflection, GetScene.
+//! - `tests/services.rs`: health, reflection, GetScene (with the truth and the star), Configure of
+//!   the truth.
 //! - `tests/viewer.rs`: quantised poses, collision lists, the page and grpc-web on the gRPC port.
 //! - `tests/record_replay.rs`: a session recorded with `--record` replays bit for bit.
 //! - `tests/security.rs`: roles, TLS, loopback-only without tokens; `tests/limits.rs`: scene

@@ -1,7 +1,10 @@
-//! Health, reflection (v1 and v1alpha) and GetScene.
+//! Health, reflection (v1 and v1alpha) and GetScene, with the truth and the star it reports.
 
 use foveal_proto::pb;
+use foveal_proto::pb::foveal_client::FovealClient;
 use foveal_tests::*;
+use tonic::Code;
+use tonic::transport::Channel;
 use tonic_health::pb::health_check_response::ServingStatus;
 use tonic_health::pb::{HealthCheckRequest, health_client::HealthClient};
 
@@ -93,5 +96,95 @@ async fn get_scene_describes_the_running_scene() {
     assert!((scene.volume_side - 10f64.cbrt()).abs() < 1e-12);
     let camera = scene.camera.expect("camera");
     assert!((camera.aspect - 1680.0 / 1050.0).abs() < 1e-12);
+    server.stop().await.expect("clean stop");
+}
+
+async fn scene(client: &mut FovealClient<Channel>) -> pb::SceneDescription {
+    client
+        .get_scene(pb::GetSceneRequest {})
+        .await
+        .expect("GetScene")
+        .into_inner()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn configure_sets_the_truth_get_scene_reports_it_and_the_star() {
+    let server = TestServer::start(small_config(100, 60.0)).await;
+    let mut client = server.client().await;
+    let before = scene(&mut client).await;
+    assert_eq!(
+        before.config.expect("config").truth,
+        pb::Truth::Shape as i32,
+        "a server starts with the drawn shape as the truth"
+    );
+
+    let applied = client
+        .configure(pb::ConfigureRequest {
+            config: Some(pb::SceneConfig {
+                truth: pb::Truth::LeafSpheres as i32,
+                shape_radius: 0.25,
+                ..Default::default()
+            }),
+            update_mask: None,
+        })
+        .await
+        .expect("Configure")
+        .into_inner()
+        .applied
+        .expect("applied");
+    assert_eq!(applied.truth, pb::Truth::LeafSpheres as i32);
+    let after = scene(&mut client).await;
+    let config = after.config.expect("config");
+    assert_eq!(config.truth, pb::Truth::LeafSpheres as i32);
+    let star = after.star.expect("star");
+    let r = config.shape_radius;
+    assert_eq!((r, star.radius), (0.25, 0.25));
+    assert!((star.core_radius - 0.3 * r).abs() < 1e-12, "{star:?}");
+    assert!(
+        (star.spike_base_radius - 0.25 * r).abs() < 1e-12,
+        "{star:?}"
+    );
+
+    // A number outside the enum is refused, naming the field, and changes nothing.
+    let err = client
+        .configure(pb::ConfigureRequest {
+            config: Some(pb::SceneConfig {
+                truth: 7,
+                ..Default::default()
+            }),
+            update_mask: None,
+        })
+        .await
+        .expect_err("truth 7");
+    assert_eq!(err.code(), Code::InvalidArgument);
+    assert!(
+        err.message().contains("ConfigureRequest.config")
+            && err.message().contains("`scene.truth` = 7"),
+        "{}",
+        err.message()
+    );
+    assert_eq!(
+        status(&mut client).await.config.expect("config").truth,
+        pb::Truth::LeafSpheres as i32
+    );
+
+    // Unspecified keeps the truth in force.
+    let applied = client
+        .configure(pb::ConfigureRequest {
+            config: Some(pb::SceneConfig {
+                bodies: 120,
+                ..Default::default()
+            }),
+            update_mask: None,
+        })
+        .await
+        .expect("Configure")
+        .into_inner()
+        .applied
+        .expect("applied");
+    assert_eq!(
+        (applied.bodies, applied.truth),
+        (120, pb::Truth::LeafSpheres as i32)
+    );
     server.stop().await.expect("clean stop");
 }

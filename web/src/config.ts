@@ -11,6 +11,7 @@ import {
   ModelF3Schema,
   PerceptualModelSchema,
   Scheduler,
+  Truth,
   type Budget,
   type PerceptualModel,
 } from "./gen/foveal/v1/foveal_pb";
@@ -28,6 +29,21 @@ export const SCHEDULERS: [string, Scheduler][] = [
 
 export function schedulerName(s: Scheduler | undefined): string {
   return SCHEDULERS.find(([, v]) => v === s)?.[0] ?? "unknown";
+}
+
+/** Truth names as the CLI spells them (`--truth`), with what each means, in protocol enum order. */
+export const TRUTHS: [string, Truth, string][] = [
+  ["shape", Truth.SHAPE, "colliding: the drawn stars touch"],
+  ["leaf-spheres", Truth.LEAF_SPHERES, "colliding: leaf spheres overlap (the paper's definition)"],
+];
+
+export function truthName(t: Truth | undefined): string {
+  return TRUTHS.find(([, v]) => v === t)?.[0] ?? "unknown";
+}
+
+/** What a truth means, for the page. */
+export function truthMeaning(t: Truth | undefined): string {
+  return TRUTHS.find(([, v]) => v === t)?.[2] ?? "the server did not say what colliding means";
 }
 
 /** `exact`, `zero`, `4ms`, `20000tests` or `0.3x`; throws with what is accepted otherwise. */

@@ -11,7 +11,17 @@ import {
   type SceneConfig,
   type SceneDescription,
 } from "./gen/foveal/v1/foveal_pb";
-import { SCHEDULERS, formatBudget, formatModel, parseBudget, parseModel, schedulerName } from "./config";
+import {
+  SCHEDULERS,
+  TRUTHS,
+  formatBudget,
+  formatModel,
+  parseBudget,
+  parseModel,
+  schedulerName,
+  truthMeaning,
+  truthName,
+} from "./config";
 import { MouseGaze } from "./gaze";
 import { Overlay, fovealRadius } from "./overlay";
 import { Plots } from "./plots";
@@ -177,6 +187,9 @@ async function session(): Promise<void> {
   const cfg = d.config;
   region = cfg?.display ? fovealRadius(cfg.display, cfg.eccentricityThresholdDeg) : null;
   fillControls(cfg);
+  const truth = el("truth");
+  truth.textContent = `truth: ${truthName(cfg?.truth)}`;
+  truth.title = truthMeaning(cfg?.truth);
   plots.clear();
   layout();
   stats.connected = true;
@@ -207,6 +220,7 @@ async function run(): Promise<void> {
     } catch (e) {
       stats.connected = false;
       stats.lastError = describe(e);
+      el("truth").textContent = "";
       const wait = backoff;
       const refused = e instanceof ConnectError && (e.code === Code.Unauthenticated || e.code === Code.PermissionDenied);
       const retry = `Retrying in ${(wait / 1000).toFixed(1)} s…`;
@@ -226,6 +240,8 @@ async function run(): Promise<void> {
 
 const schedulerSelect = el<HTMLSelectElement>("scheduler");
 for (const [name] of SCHEDULERS) schedulerSelect.add(new Option(name, name));
+const truthSelect = el<HTMLSelectElement>("truth-select");
+for (const [name] of TRUTHS) truthSelect.add(new Option(name, name));
 
 /** Show the configuration in force, except in the control the user is editing. */
 function fillControls(cfg: SceneConfig | undefined): void {
@@ -235,6 +251,7 @@ function fillControls(cfg: SceneConfig | undefined): void {
     if (document.activeElement !== e) e.value = v;
   };
   set("scheduler", schedulerName(cfg.scheduler));
+  set("truth-select", truthName(cfg.truth));
   set("budget", formatBudget(cfg.budget));
   set("bodies", String(cfg.bodies));
   set("measure-model", formatModel(cfg.measureModel));
@@ -270,6 +287,13 @@ schedulerSelect.addEventListener("change", () =>
     const s = SCHEDULERS.find(([n]) => n === schedulerSelect.value);
     if (!s) throw new Error(`unknown scheduler ${schedulerSelect.value}`);
     c.scheduler = s[1];
+  }),
+);
+truthSelect.addEventListener("change", () =>
+  configure((c) => {
+    const t = TRUTHS.find(([n]) => n === truthSelect.value);
+    if (!t) throw new Error(`unknown truth ${truthSelect.value}`);
+    c.truth = t[1];
   }),
 );
 el("budget").addEventListener("change", (e) =>

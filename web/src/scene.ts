@@ -2,8 +2,8 @@
 // seen through the server's camera (orbit controls move a copy; reset brings it back).
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
-import { mergeGeometries } from "three/examples/jsm/utils/BufferGeometryUtils.js";
 import type { SceneDescription } from "./gen/foveal/v1/foveal_pb";
+import { starDims, starGeometry } from "./star";
 
 /** Colours of the legend, shared with the page's CSS swatches. */
 export const COLOURS = {
@@ -11,30 +11,6 @@ export const COLOURS = {
   real: new THREE.Color(0x2fbf71),
   deemed: new THREE.Color(0xff4d4d),
 } as const;
-
-/**
- * The star of docs/DESIGN.md "Shape": a core ball of radius 0.3R and six cones along ±x, ±y, ±z
- * with apex at R and a base disc of radius 0.25R at the origin.
- */
-export function starGeometry(radius: number): THREE.BufferGeometry {
-  // Few triangles (about 60): at N = 10,000 a software-rendered WebGL still keeps up.
-  const parts: THREE.BufferGeometry[] = [new THREE.IcosahedronGeometry(0.3 * radius, 0)];
-  const axes: [number, number, number][] = [
-    [0, 0, 0], [0, 0, Math.PI], [0, 0, -Math.PI / 2], [0, 0, Math.PI / 2], [Math.PI / 2, 0, 0], [-Math.PI / 2, 0, 0],
-  ];
-  for (const [rx, ry, rz] of axes) {
-    const cone = new THREE.ConeGeometry(0.25 * radius, radius, 6, 1, true);
-    cone.translate(0, radius / 2, 0);
-    cone.applyMatrix4(new THREE.Matrix4().makeRotationFromEuler(new THREE.Euler(rx, ry, rz)));
-    parts.push(cone.toNonIndexed());
-  }
-  parts[0] = parts[0].index ? parts[0].toNonIndexed() : parts[0];
-  for (const p of parts) p.deleteAttribute("uv");
-  const merged = mergeGeometries(parts);
-  if (!merged) throw new Error("star geometry: parts do not merge");
-  merged.computeVertexNormals();
-  return merged;
-}
 
 export class SceneView {
   readonly renderer: THREE.WebGLRenderer;
@@ -73,14 +49,13 @@ export class SceneView {
   load(d: SceneDescription): void {
     const cfg = d.config;
     const n = cfg?.bodies ?? 0;
-    const radius = cfg?.shapeRadius || 0.2;
     if (this.mesh) {
       this.scene.remove(this.mesh);
       this.mesh.geometry.dispose();
       this.mesh.dispose();
     }
     const material = new THREE.MeshLambertMaterial({ color: 0xffffff });
-    const mesh = new THREE.InstancedMesh(starGeometry(radius), material, n);
+    const mesh = new THREE.InstancedMesh(starGeometry(starDims(d)), material, n);
     mesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
     mesh.frustumCulled = false;
     this.colours = new Float32Array(3 * n);

@@ -32,12 +32,18 @@ export function missing() {
 
 /** The Node client module, bundled from TypeScript on the fly. */
 export async function clientModule() {
+  return bundle("client.ts");
+}
+
+/** A TypeScript module (path relative to test/), bundled for Node on the fly and imported. */
+export async function bundle(entry) {
   // Inside web/, so that its imports resolve from web/node_modules.
   const dir = join(here, ".build");
   mkdirSync(dir, { recursive: true });
-  const out = join(dir, `client-${process.pid}.mjs`);
+  const name = entry.replace(/^.*\//, "").replace(/\.ts$/, "");
+  const out = join(dir, `${name}-${process.pid}.mjs`);
   await build({
-    entryPoints: [join(here, "client.ts")],
+    entryPoints: [join(here, entry)],
     bundle: true,
     platform: "node",
     format: "esm",

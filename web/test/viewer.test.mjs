@@ -1,7 +1,8 @@
 // The viewer in a real browser (Debian's chromium through playwright-core) against a real
 // foveal-server: it loads cleanly, draws and animates, the mouse becomes the server's fixation
-// within 100 ms, its controls reach Configure (and show the server's refusal), it survives the
-// server going away, and at N = 10,000 it decodes and applies a frame within 4 ms.
+// within 100 ms, its controls reach Configure (and show the server's refusal), it shows the truth
+// the server reports, it survives the server going away, and at N = 10,000 it decodes and applies
+// a frame within 4 ms.
 import assert from "node:assert/strict";
 import { mkdirSync } from "node:fs";
 import { join } from "node:path";
@@ -153,6 +154,19 @@ describe("viewer at N = 500 under a sphere-test budget", { skip }, () => {
     assert.equal((await rpc.getStatus({})).config.bodies, 500);
   });
 
+  test("shows the truth the server reports, and its selector changes it", async () => {
+    const truth = () => page.textContent("#truth");
+    assert.equal((await rpc.getScene({})).config.truth, pb.Truth.SHAPE);
+    assert.equal(await truth(), "truth: shape");
+    assert.equal(await page.inputValue("#truth-select"), "shape");
+    await page.selectOption("#truth-select", "leaf-spheres");
+    const reported = await waitFor(async () => (await rpc.getScene({})).config.truth === pb.Truth.LEAF_SPHERES, 10_000);
+    assert.ok(reported, "GetScene still reports the old truth");
+    const shown = await waitFor(async () => (await truth()) === "truth: leaf-spheres", 10_000);
+    assert.ok(shown, `the page shows "${await truth()}"`);
+    assert.equal(await page.inputValue("#truth-select"), "leaf-spheres");
+  });
+
   test("says the server is gone and reconnects when it is back", async () => {
     await server.stop();
     const down = await waitFor(async () => (await page.textContent("#status")).includes("cannot reach"), 10_000);
@@ -167,6 +181,8 @@ describe("viewer at N = 500 under a sphere-test budget", { skip }, () => {
     assert.ok(up, "no frames after the server came back");
     assert.equal(up.bodies, 300);
     assert.match(await page.textContent("#status"), /connected/);
+    // The new server's truth (its default), not the one the page set on the old server.
+    assert.equal(await page.textContent("#truth"), "truth: shape");
   });
 });
 
