@@ -158,7 +158,8 @@ fn write_part(
          simulation, whose deemed pairs respond as if they collided, so the runs show what a \
          viewer sees over time and differ in their physics: compare schedulers in \
          `open_loop_report.md` (identical frames, with the clairvoyant bound).\n\nProtocol:\n\n\
-         {}- runs: {}; wall time of the runs {:.1} s\n\n",
+         - truth: `{}` (what \"colliding\" means)\n{}- runs: {}; wall time of the runs {:.1} s\n\n",
+        cfg.truth,
         report::describe(cfg),
         runs.len(),
         wall

@@ -1250,6 +1250,11 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
     let mut s = String::new();
     let _ = writeln!(
         s,
+        "Truth: `{}` (what \"colliding\" means for every exact answer, true gap and true P).\n",
+        cfg.truth
+    );
+    let _ = writeln!(
+        s,
         "Cells: true P over round-robin's, paired by seed, mean ± 95% CI half-width; in brackets the \
          share of the achievable reduction (P_rr - P_s) / (P_rr - P_clairvoyant). Wall-clock \
          columns add the sphere tests done relative to round-robin's.\n"

@@ -455,7 +455,7 @@ fn balls(a: DVec3, b: DVec3, r: f64, eps: f64) -> Contact {
     let d = b - a;
     let len = d.length();
     // Coincident centres: any normal separates them equally well; +x is the deterministic pick.
-    let n = if len > 0.0 { d / len } else { DVec3::X };
+    let n = unit_or(d, DVec3::X);
     let s = len - 2.0 * r;
     if s <= eps {
         Contact::Touching {
@@ -492,6 +492,19 @@ fn ball_cone(centre: DVec3, r: f64, cone: &Cone, eps: f64) -> Contact {
     }
 }
 
+/// `d` scaled to unit length, or `fallback` for a zero vector; scaled by its largest component
+/// first, so that a vector whose squared length underflows still gets a unit direction.
+#[inline]
+fn unit_or(d: DVec3, fallback: DVec3) -> DVec3 {
+    let m = d.abs().max_element();
+    if m > 0.0 && m.is_finite() {
+        let u = d / m;
+        u / u.length()
+    } else {
+        fallback
+    }
+}
+
 /// Any unit vector perpendicular to unit `a` (deterministic).
 #[inline]
 fn perpendicular(a: DVec3) -> DVec3 {
@@ -509,12 +522,11 @@ fn point_cone(p: DVec3, cone: &Cone) -> (f64, DVec3, DVec3) {
     let u = p - cone.base;
     let t = u.dot(cone.axis);
     let radial = u - cone.axis * t;
+    // Off the axis by a hair, the subtraction leaves an axial part of the order of the rounding:
+    // take it out again before the radial direction is normalised.
+    let radial = radial - cone.axis * radial.dot(cone.axis);
     let rho = radial.length();
-    let e = if rho > 0.0 {
-        radial / rho
-    } else {
-        perpendicular(cone.axis)
-    };
+    let e = unit_or(radial, perpendicular(cone.axis));
     let l = cone.slant;
     // Signed distance to the slant side's line, positive outside.
     let slant = (b * t + h * rho - b * h) / l;
@@ -541,7 +553,7 @@ fn point_cone(p: DVec3, cone: &Cone) -> (f64, DVec3, DVec3) {
     let q = cone.base + cone.axis * tc + e * rc;
     let dist = d2((tc, rc)).sqrt();
     let n = if dist > 0.0 {
-        (p - q) / dist
+        unit_or(p - q, slant_normal)
     } else if tc <= 0.0 && rc < b {
         -cone.axis
     } else {
@@ -644,13 +656,19 @@ fn gjk(ka: &Cone, kb: &Cone, eps: f64, boolean: bool) -> Gjk {
         }
         // Converged when the proven lower bound vw / |v| is within 1e-9 of the upper bound |v|,
         // relatively or in absolute terms (the touching tolerance): on the cones' curved rims
-        // GJK converges only linearly, and 1e-12 took tens of iterations more.
-        if vv - vw <= (1e-9 * vv).max(eps * vv.sqrt())
-            || g.simplex[..g.len].iter().any(|s| s.w == w.w)
-        {
-            // Converged: no vertex gets nearer the origin.
-            g.touching = vv.sqrt() <= eps;
-            g.lower = (vw / vv.sqrt()).max(0.0);
+        // GJK converges only linearly, and 1e-12 took tens of iterations more. Stalled when the
+        // new vertex is (to 1e-12 R) one the simplex has: no progress is possible.
+        let stall = 1e-3 * eps;
+        let stalled = g.simplex[..g.len]
+            .iter()
+            .any(|s| (s.w - w.w).length_squared() <= stall * stall);
+        if vv - vw <= (1e-9 * vv).max(eps * vv.sqrt()) || stalled {
+            // Decided on the proven lower bound, not on |v|: a stalled search can stop short
+            // of the nearest point with v·w well below |v|², and a pair whose separation is not
+            // proven is not apart.
+            let lower = vw / vv.sqrt();
+            g.touching = lower <= eps;
+            g.lower = lower.max(0.0);
             return g;
         }
         g.simplex[g.len] = w;
@@ -660,7 +678,11 @@ fn gjk(ka: &Cone, kb: &Cone, eps: f64, boolean: bool) -> Gjk {
             return g;
         }
     }
-    g.touching = g.v.length() <= eps;
+    // Out of iterations: what is proven decides.
+    let w = support(ka, kb, -g.v);
+    let lower = g.v.dot(w.w) / g.v.length().max(f64::MIN_POSITIVE);
+    g.touching = lower <= eps;
+    g.lower = lower.max(0.0);
     g
 }
 
@@ -798,7 +820,9 @@ fn closest_tetrahedron(p: [DVec3; 4]) -> Option<Closest> {
     const FACES: [[usize; 4]; 4] = [[0, 1, 2, 3], [0, 2, 3, 1], [0, 3, 1, 2], [1, 3, 2, 0]];
     let volume = (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]));
     let scale = (p[1] - p[0]).length() * (p[2] - p[0]).length() * (p[3] - p[0]).length();
-    let flat = volume.abs() <= 1e-12 * scale;
+    // Nearly flat, its faces' signs cannot be trusted to enclose the origin: take the nearest
+    // face instead (an origin truly on it is then at distance 0, touching next iteration).
+    let flat = volume.abs() <= 1e-9 * scale;
     let mut best: Option<Closest> = None;
     for f in FACES {
         let (a, b, c, d) = (p[f[0]], p[f[1]], p[f[2]], p[f[3]]);
@@ -847,10 +871,11 @@ fn cones(ka: &Cone, kb: &Cone, eps: f64) -> Contact {
             kb.base + kb.axis * (0.5 * kb.height),
         )
     };
-    let normal = if g.len < 4 && g.v.length_squared() > 0.0 {
-        -g.v.normalize()
+    let centre_line = unit_or(kb.base - ka.base, DVec3::X);
+    let normal = if g.len < 4 {
+        unit_or(-g.v, centre_line)
     } else {
-        (kb.base - ka.base).normalize_or(DVec3::X)
+        centre_line
     };
     Contact::Touching {
         point: (pa + pb) * 0.5,
