@@ -64,8 +64,9 @@
 //! Both directions are searched (B's surface against A, then A's against B), each a complete
 //! bracket; they are combined (the larger lower, the smaller upper bound) and must agree, or the
 //! judge panics: a disagreement is a bug of the judge. [`Oracle::judge`] brackets the distance
-//! to the precision (1e-10 R by default); [`Oracle::verdict`] stops each search as soon as the
-//! verdict is settled, which is what checking a whole scene's touching answers needs.
+//! to the precision (1e-10 R by default) searching B's surface, and searches A's only until the
+//! verdict is settled; [`Oracle::verdict`] stops both searches as soon as the verdict is
+//! settled, which is what checking a whole scene's touching answers needs.
 //!
 //! # Verdict
 //! - [`Verdict::Touching`]: a sample of one star lies in the other (the sampled distance is 0).
@@ -292,11 +293,14 @@ impl Bracket {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Oracle {
     /// Bounding radius R (cone height).
-    pub radius: f64,
+    radius: f64,
     /// Core ball radius.
-    pub core: f64,
+    core: f64,
     /// Spike base disc radius.
-    pub base: f64,
+    base: f64,
+    /// Bounding spheres of the parts of the star at the origin: the core ball; each cone's
+    /// smallest, through its apex and rim.
+    spheres: [(V3, f64); 7],
     /// A search stops when its bracket is this narrow (scene units).
     pub precision: f64,
     /// A search stops after this many patch evaluations.
@@ -356,7 +360,7 @@ impl Rect {
             self.trig_lo[k].0 + self.trig_hi[k].0,
             self.trig_lo[k].1 + self.trig_hi[k].1,
         );
-        let n = x.hypot(y);
+        let n = (x * x + y * y).sqrt();
         (x / n, y / n)
     }
 
@@ -372,6 +376,9 @@ impl Rect {
         [a, b]
     }
 }
+
+/// [`Patch::split`] of a whole surface not yet cut into its first patches.
+const OPEN: u8 = u8::MAX;
 
 /// A patch: a rectangle of a surface's parameters, with its lower bound.
 #[derive(Debug, Clone, Copy)]
@@ -421,7 +428,7 @@ fn arc_min(kx: f64, ky: f64, (ca, sa): (f64, f64), (cb, sb): (f64, f64)) -> f64 
     // it is anticlockwise of the start and clockwise of the end (the arc is shorter than pi).
     let (wx, wy) = (-kx, -ky);
     if ca * wy - sa * wx >= 0.0 && wx * sb - wy * cb >= 0.0 {
-        ends.min(-kx.hypot(ky))
+        ends.min(-(kx * kx + ky * ky).sqrt())
     } else {
         ends
     }
@@ -431,13 +438,40 @@ impl Oracle {
     /// The judge for stars of bounding radius `radius`, with a precision of 1e-10 R and a cap of
     /// 200,000 evaluations per direction.
     pub fn new(radius: f64) -> Self {
+        let (core, base) = (CORE_FRACTION * radius, BASE_FRACTION * radius);
+        // The sphere through a cone's apex and rim, centred on its axis at `off`.
+        let off = (radius * radius - base * base) / (2.0 * radius);
+        let spheres = std::array::from_fn(|j| {
+            if j == 0 {
+                (V3::ZERO, core)
+            } else {
+                let (k, sign) = spike(j - 1);
+                (unit(k) * (sign * off), radius - off)
+            }
+        });
         Self {
             radius,
-            core: CORE_FRACTION * radius,
-            base: BASE_FRACTION * radius,
+            core,
+            base,
+            spheres,
             precision: 1e-10 * radius,
             cap: 200_000,
         }
+    }
+
+    /// Bounding radius R.
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// Core ball radius.
+    pub fn core(&self) -> f64 {
+        self.core
+    }
+
+    /// Spike base disc radius.
+    pub fn base(&self) -> f64 {
+        self.base
     }
 
     /// Whether the star at the origin (unrotated) contains `p`.
@@ -497,13 +531,9 @@ impl Oracle {
 
     /// The bounding sphere of part `j` of the star at the origin: the core ball; a cone's
     /// smallest, through its apex and rim.
+    #[inline]
     fn bound(&self, j: usize) -> (V3, f64) {
-        if j == 0 {
-            return (V3::ZERO, self.core);
-        }
-        let off = (self.radius * self.radius - self.base * self.base) / (2.0 * self.radius);
-        let (k, sign) = spike(j - 1);
-        (unit(k) * (sign * off), self.radius - off)
+        self.spheres[j]
     }
 
     /// Support function of part `j` of the star at the origin: the largest `g . y` over its points.
@@ -513,7 +543,8 @@ impl Oracle {
         }
         let (k, sign) = spike(j - 1);
         let ga = sign * g.get(k);
-        let perp = g.get((k + 1) % 3).hypot(g.get((k + 2) % 3));
+        let (u, v) = (g.get((k + 1) % 3), g.get((k + 2) % 3));
+        let perp = (u * u + v * v).sqrt();
         (self.radius * ga).max(self.base * perp)
     }
 
@@ -573,7 +604,7 @@ impl Oracle {
         let c = self.point(sf, mid[0], p_mid, phi_mid);
         // Extents along each coordinate from the centre (path lengths), their sum bounds
         // |x - c| over the patch.
-        let slant = self.radius.hypot(self.base);
+        let slant = (self.radius * self.radius + self.base * self.base).sqrt();
         let ext = match sf.kind {
             Kind::Core => [self.core * half[0], self.core * p_mid.1 * half[1]],
             Kind::Lateral => [slant * half[0], (1.0 - mid[0]) * self.base * half[1]],
@@ -584,77 +615,76 @@ impl Oracle {
         let rounding = ROUNDING * self.radius;
         let mut upper = f64::INFINITY;
         let mut lower = f64::INFINITY;
-        let mut split = if ext[0] >= ext[1] { 0 } else { 1 };
-        let mut split_lower = f64::INFINITY;
-        // T's parts nearest first, by their bounding spheres: a part whose sphere is farther
-        // than the least bound so far cannot lower it.
-        let mut order = [(0.0f64, 0usize); 7];
-        for (j, slot) in order.iter_mut().enumerate() {
+        // T's parts by their bounding spheres: a part whose sphere is farther than the least
+        // bound so far cannot lower it. The nearest first, then the others in order.
+        let crude: [f64; 7] = std::array::from_fn(|j| {
             let (cj, rj) = self.bound(j);
-            *slot = ((c - cj).norm() - rj - reach, j);
-        }
-        order.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
-        for (crude, j) in order {
-            if crude >= lower {
-                break;
+            (c - cj).norm() - rj - reach
+        });
+        let first = (1..7).fold(0, |f, j| if crude[j] < crude[f] { j } else { f });
+        // The least of g.x over the patch given the least over its azimuth range `m` of
+        // `(g.e1) cos + (g.e2) sin`, and `ga = g.a`.
+        let least = |ga: f64, m: f64| -> f64 {
+            match sf.kind {
+                Kind::Core => self.core * arc_min(ga, m, p_lo, p_hi),
+                Kind::Lateral => {
+                    let at = |u: f64| u * self.radius * ga + (1.0 - u) * self.base * m;
+                    at(lo[0]).min(at(hi[0]))
+                }
+                Kind::Base => (lo[0] * self.base * m).min(hi[0] * self.base * m),
+            }
+        };
+        // The direction of the part giving the least bound, if its separating axis gave it.
+        let mut axis: Option<V3> = None;
+        for j in std::iter::once(first).chain((0..7).filter(|&j| j != first)) {
+            if crude[j] >= lower {
+                continue;
             }
             let (d, q) = self.part_distance(j, c);
             if d <= 0.0 {
-                return (0.0, c, f64::NEG_INFINITY, split, size);
+                return (0.0, c, f64::NEG_INFINITY, 0, size);
             }
             upper = upper.min(d);
-            let g = (c - q) * (1.0 / d);
+            let g = c - q;
             let g = g * (1.0 / g.norm());
-            let h = self.support(j, g);
-            // g.x over the patch: least over the rectangle, and along each coordinate line
-            // through the centre (to choose the split).
-            let (go, ga, g1, g2) = (g.dot(sf.o), g.dot(sf.a), g.dot(sf.e1), g.dot(sf.e2));
-            let m = arc_min(g1, g2, phi_lo, phi_hi);
-            let at_mid = g1 * phi_mid.0 + g2 * phi_mid.1;
-            let (least, along0, along1) = match sf.kind {
-                Kind::Core => {
-                    let r = self.core;
-                    (
-                        go + r * arc_min(ga, m, p_lo, p_hi),
-                        go + r * arc_min(ga, at_mid, p_lo, p_hi),
-                        go + r * (ga * p_mid.0 + m * p_mid.1),
-                    )
-                }
-                Kind::Lateral => {
-                    let (hh, b) = (self.radius, self.base);
-                    let at = |u: f64, k: f64| u * hh * ga + (1.0 - u) * b * k;
-                    (
-                        go + at(lo[0], m).min(at(hi[0], m)),
-                        go + at(lo[0], at_mid).min(at(hi[0], at_mid)),
-                        go + at(mid[0], m),
-                    )
-                }
-                Kind::Base => {
-                    let b = self.base;
-                    (
-                        go + (lo[0] * b * m).min(hi[0] * b * m),
-                        go + (lo[0] * b * at_mid).min(hi[0] * b * at_mid),
-                        go + mid[0] * b * m,
-                    )
-                }
-            };
-            let plane = least - h;
+            let (g1, g2) = (g.dot(sf.e1), g.dot(sf.e2));
+            let plane = g.dot(sf.o) + least(g.dot(sf.a), arc_min(g1, g2, phi_lo, phi_hi))
+                - self.support(j, g);
             let lipschitz = d - reach;
             let bound = plane.max(lipschitz) - rounding;
             if bound < lower {
                 lower = bound;
-            }
-            if bound < split_lower {
-                split_lower = bound;
-                if plane >= lipschitz {
-                    // What each coordinate's variation alone costs the separating-axis bound.
-                    let gc = g.dot(c);
-                    split = if gc - along0 >= gc - along1 { 0 } else { 1 };
-                } else {
-                    split = if ext[0] >= ext[1] { 0 } else { 1 };
-                }
+                axis = (plane >= lipschitz).then_some(g);
             }
         }
+        let split = match axis {
+            // What each coordinate's variation alone costs the separating-axis bound: the
+            // least of g.x along the coordinate line through the centre, against g.c.
+            Some(g) => {
+                let (ga, g1, g2) = (g.dot(sf.a), g.dot(sf.e1), g.dot(sf.e2));
+                let m = arc_min(g1, g2, phi_lo, phi_hi);
+                let at_mid = g1 * phi_mid.0 + g2 * phi_mid.1;
+                let (along0, along1) = match sf.kind {
+                    Kind::Core => (
+                        self.core * arc_min(ga, at_mid, p_lo, p_hi),
+                        self.core * (ga * p_mid.0 + m * p_mid.1),
+                    ),
+                    Kind::Lateral => (
+                        least(ga, at_mid),
+                        mid[0] * self.radius * ga + (1.0 - mid[0]) * self.base * m,
+                    ),
+                    Kind::Base => (least(ga, at_mid), mid[0] * self.base * m),
+                };
+                if along0 <= along1 { 0 } else { 1 }
+            }
+            None => {
+                if ext[0] >= ext[1] {
+                    0
+                } else {
+                    1
+                }
+            }
+        };
         (upper, c, lower, split, size)
     }
 
@@ -675,22 +705,39 @@ impl Oracle {
         let surfaces = self.surfaces(s);
         let rounding = ROUNDING * self.radius;
         let apart = (TOLERANCE + ROUNDING) * self.radius;
-        // S's parts in order of a lower bound on their distance to T, by bounding spheres.
-        let mut parts = [(0.0f64, 0usize); 7];
-        for (i, slot) in parts.iter_mut().enumerate() {
-            let (ci, ri) = self.bound(i);
-            let ci = s.judging_point(ci);
-            let lb = (0..7)
-                .map(|j| {
-                    let (cj, rj) = self.bound(j);
-                    (ci - cj).norm() - ri - rj
-                })
-                .fold(f64::INFINITY, f64::min);
-            *slot = (lb - rounding, i);
-        }
-        parts.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
         let mut patches: Vec<Patch> = Vec::new();
         let mut heap = BinaryHeap::new();
+        // Each surface of S enters whole, unopened, with a lower bound from bounding spheres:
+        // the core's ball, a lateral surface in its cone's sphere, a base disc in its own.
+        let whole = Rect::new([0.0; 2], [0.0; 2]);
+        for (id, sf) in surfaces.iter().enumerate() {
+            let (centre, radius) = match sf.kind {
+                Kind::Core => (sf.o, self.core),
+                Kind::Lateral => {
+                    let (c, r) = self.bound(1);
+                    (sf.o + sf.a * c.x, r)
+                }
+                Kind::Base => (sf.o, self.base),
+            };
+            let lower = (0..7)
+                .map(|j| {
+                    let (cj, rj) = self.bound(j);
+                    (centre - cj).norm() - radius - rj
+                })
+                .fold(f64::INFINITY, f64::min)
+                - rounding;
+            heap.push(Entry {
+                lower,
+                index: patches.len(),
+            });
+            patches.push(Patch {
+                surface: id as u8,
+                rect: whole,
+                lower,
+                split: OPEN,
+                size: f64::INFINITY,
+            });
+        }
         let mut upper = f64::INFINITY;
         let mut witness = s.centre;
         let mut pruned = f64::INFINITY;
@@ -702,52 +749,7 @@ impl Oracle {
             evaluations,
         };
         let tau = std::f64::consts::TAU;
-        for &(lb, part) in &parts {
-            if lb >= upper - self.precision || (settle && lb > apart) {
-                pruned = pruned.min(lb);
-                continue;
-            }
-            let ids: &[usize] = if part == 0 {
-                &[0]
-            } else {
-                &[2 * part - 1, 2 * part]
-            };
-            for &id in ids {
-                let sf = &surfaces[id];
-                let (n0, n1, span0) = Self::initial(sf.kind);
-                for i0 in 0..n0 {
-                    for i1 in 0..n1 {
-                        let rect = Rect::new(
-                            [span0 * i0 as f64 / n0 as f64, tau * i1 as f64 / n1 as f64],
-                            [
-                                span0 * (i0 + 1) as f64 / n0 as f64,
-                                tau * (i1 + 1) as f64 / n1 as f64,
-                            ],
-                        );
-                        let (d, c, lower, split, size) = self.evaluate(sf, &rect);
-                        evaluations += 1;
-                        if d < upper {
-                            upper = d;
-                            witness = c;
-                        }
-                        if upper <= 0.0 {
-                            return done(f64::NEG_INFINITY, 0.0, witness, evaluations);
-                        }
-                        heap.push(Entry {
-                            lower,
-                            index: patches.len(),
-                        });
-                        patches.push(Patch {
-                            surface: id as u8,
-                            rect,
-                            lower,
-                            split,
-                            size,
-                        });
-                    }
-                }
-            }
-        }
+        let mut children: Vec<Rect> = Vec::with_capacity(8);
         loop {
             let Some(top) = heap.pop() else {
                 return done(pruned, upper, witness, evaluations);
@@ -761,7 +763,20 @@ impl Oracle {
                 return done(p.lower.min(pruned), upper, witness, evaluations);
             }
             let sf = &surfaces[usize::from(p.surface)];
-            for rect in p.rect.halves(usize::from(p.split)) {
+            children.clear();
+            if p.split == OPEN {
+                let (n0, n1, span0) = Self::initial(sf.kind);
+                for i0 in 0..n0 {
+                    for i1 in 0..n1 {
+                        let (f0, f1) = (i0 as f64 / n0 as f64, i1 as f64 / n1 as f64);
+                        let (t0, t1) = ((i0 + 1) as f64 / n0 as f64, (i1 + 1) as f64 / n1 as f64);
+                        children.push(Rect::new([span0 * f0, tau * f1], [span0 * t0, tau * t1]));
+                    }
+                }
+            } else {
+                children.extend(p.rect.halves(usize::from(p.split)));
+            }
+            for &rect in &children {
                 let (d, c, lower, split, size) = self.evaluate(sf, &rect);
                 evaluations += 1;
                 if d < upper {
@@ -791,7 +806,8 @@ impl Oracle {
     }
 
     /// Judge star B placed at `b` (its centre and axes in A's frame) against star A at the
-    /// origin, bracketing the distance to [`Self::precision`].
+    /// origin, bracketing the distance to [`Self::precision`] (B's surface searched to it, A's
+    /// until the verdict is settled).
     ///
     /// # Panics
     /// If the two directions' brackets contradict each other: a bug of the judge.
@@ -815,7 +831,8 @@ impl Oracle {
                 evaluations: first.evaluations,
             };
         }
-        let second = self.bracket(&b.inverse(), settle);
+        // The reverse search needs only settle the verdict: the first bracket is complete.
+        let second = self.bracket(&b.inverse(), true);
         let slack = 1e-9 * self.radius;
         assert!(
             second.lower <= first.upper + slack && first.lower <= second.upper + slack,

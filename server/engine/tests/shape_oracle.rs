@@ -253,8 +253,9 @@ fn half_depth_touches(pose: &Pose, c: &Contact) -> Result<(), String> {
 fn the_judge_measures_the_engines_star() {
     let star = Star::new(R);
     let o = Oracle::new(R);
-    assert_eq!(o.core, star.core_radius);
-    assert_eq!(o.base, star.spike_base_radius);
+    assert_eq!(o.core(), star.core_radius);
+    assert_eq!(o.base(), star.spike_base_radius);
+    assert_eq!(o.radius(), star.radius);
     // The engine's own point test (the octree's, not the contact's) agrees off the surface.
     let mut u = Uniforms(0x57a2);
     for _ in 0..20_000 {
