@@ -13,7 +13,8 @@
 //! Some of these fail on the engine as it is, and are kept, ignored, until it is fixed (each
 //! `#[ignore]` names its case): the gap, the closest points, the swap symmetry and grazing
 //! answers (GJK stops on a repeated support point before it converges:
-//! `gjk_stops_early_on_a_repeated_support_point`), and moving by the depth
+//! `gjk_stops_early_on_a_repeated_support_point`; or reads a flat simplex as enclosing the
+//! origin: `gjk_reads_a_flat_simplex_as_enclosing`), and moving by the depth
 //! (`moving_by_the_depth_parts_the_stars_pinned`). `cargo test -- --ignored` runs them.
 
 #[allow(dead_code)]
@@ -501,7 +502,11 @@ fn pose_from_rows(rows: [[f64; 3]; 3], t: [f64; 3]) -> Pose {
 /// 4. a random pose: the gap 0.0260625079, the judge's bracket [0.02606250704, 0.02606250705]
 ///    (8.8e-10, 4.4e-9 R, too large);
 /// 5. A's +y tip against B's core, B's spike nearer: the gap 0.00329765758, the judge's bracket
-///    [0.00329765732, 0.00329765732] (2.6e-10, 1.3e-9 R, too large).
+///    [0.00329765732, 0.00329765732] (2.6e-10, 1.3e-9 R, too large);
+/// 6. found by `foveal-bench shape-check` (N = 10,000, seed 1, frame 181, pair 829-1020, the
+///    engine's own `shape_pose`): the engine says apart (gap 7.22e-8, the lower bound when GJK
+///    stops -1.45e-6) and the pair not colliding; the judge finds them touching. The same pose
+///    rounded differently in its last bits gives the engine's touching, depth 7.0e-8.
 #[test]
 #[ignore = "engine: GJK stops on a repeated support point with a negative lower bound"]
 fn gjk_stops_early_on_a_repeated_support_point() {
@@ -556,6 +561,35 @@ fn gjk_stops_early_on_a_repeated_support_point() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// A pose where the engine's contact says touching (depth 0) and its `intersects` apart, and the
+/// judge proves the stars 4.384e-4 (2.2e-3 R) apart (R = 0.2). Found by `foveal-bench
+/// shape-check` (N = 10,000, seed 1, origin (1e7, -1e7, 5e6), frame 61, pair 3587-8914, the
+/// engine's own `shape_pose`): in `contact`'s GJK for one cone pair a support point comes back
+/// one ulp from a vertex already in the simplex (so the exact-equality test for a repeat misses
+/// it), the tetrahedron is flat, the origin is read as enclosed, EPA fails on the flat simplex
+/// and the pair is reported touching at depth 0.
+#[test]
+#[ignore = "engine: GJK reads a flat tetrahedron (a near-repeated support point) as enclosing"]
+fn gjk_reads_a_flat_simplex_as_enclosing() {
+    let p = pose_from_rows(
+        [
+            [-0.12910998746488267, 0.7170201971654303, 0.6849909838776458],
+            [-0.25852351546669583, 0.6425461288371003, -0.721318282221654],
+            [
+                -0.9573380819164976,
+                -0.27021567159086823,
+                0.10240745939206353,
+            ],
+        ],
+        [
+            -0.16341721966580094,
+            0.04269004667950341,
+            -0.061027046954944236,
+        ],
+    );
+    check(&p).assert_all();
 }
 
 /// Poses where moving B along the engine's normal by the depth and 1e-6 R leaves the stars
