@@ -592,6 +592,68 @@ fn gjk_reads_a_flat_simplex_as_enclosing() {
     check(&p).assert_all();
 }
 
+/// Inputs on which the `star_contact` fuzz target finds a contact normal that is not a unit
+/// vector (|n| - 1 of 1.1e-7 to 2.1e-7), the rotation from the normalised quaternion (x, y, z, w)
+/// of the first four numbers, the translation the next three wrapped into (-3R, 3R), R = 1:
+/// 1. B's spike pointing at A's centre within 1e-9 of its length (core of A against that cone):
+///    the radial part of the centre's offset is a difference of nearly equal numbers, its
+///    rounding leaves an axial component of some 1e-7 in the unit radial direction, and the
+///    slant normal built from it is 1.1e-7 too long;
+/// 2. the same for another spike, 2.1e-7 too long;
+/// 3. centres 2.3e-159 apart: the cores' normal divides the offset by its length, whose square
+///    underflows, 1.6e-7 too long.
+#[test]
+#[ignore = "engine: contact normals off unit length (see the comment)"]
+fn contact_normals_are_unit_pinned() {
+    let inputs: [[f64; 8]; 3] = [
+        [
+            8.579405861249677e-103,
+            -1.8325506472120096e-6,
+            -1.832550647205125e-6,
+            2.9141991980873104e-307,
+            4.3782472911551893e-305,
+            2261634.5098050525,
+            -4.656944807942254e-10,
+            1.5810949027e-314,
+        ],
+        [
+            3.3224550058474415e-223,
+            -4.656612873077393e-10,
+            -1.7881393450240894e-6,
+            1.3552226809780377e-308,
+            4.9806105157086026e54,
+            -4.873462772862743e-10,
+            1.5158994592271818e-30,
+            1.5810948143e-314,
+        ],
+        [
+            1.727235351802899e-77,
+            0.0,
+            1.1319601547336064e-72,
+            3.0517578125e-5,
+            7.2911220192911456e-304,
+            2.276265936144519e-159,
+            5.4685083952068926e-304,
+            0.0,
+        ],
+    ];
+    let mut failures = Vec::new();
+    for v in inputs {
+        let q = DQuat::from_xyzw(v[0], v[1], v[2], v[3]);
+        let r = 10f64.powf(v[7].clamp(-6.0, 6.0));
+        let pose = Pose {
+            rotation: DMat3::from_quat(q / q.length()),
+            translation: DVec3::new(v[4] % 3.0, v[5] % 3.0, v[6] % 3.0) * r,
+        };
+        let c = StarGeometry::new(Star::new(r)).contact(&pose);
+        let n = c.normal().length();
+        if (n - 1.0).abs() > 1e-9 {
+            failures.push(format!("|n| = {n}: {c:?} at {pose:?}"));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
 /// Poses where moving B along the engine's normal by the depth and 1e-6 R leaves the stars
 /// touching (R = 0.2):
 /// 1. coincident centres, B turned half a turn about y: depth 0.12 (the cores') along +x, the
