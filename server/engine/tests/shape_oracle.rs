@@ -503,10 +503,11 @@ fn pose_from_rows(rows: [[f64; 3]; 3], t: [f64; 3]) -> Pose {
 ///    (8.8e-10, 4.4e-9 R, too large);
 /// 5. A's +y tip against B's core, B's spike nearer: the gap 0.00329765758, the judge's bracket
 ///    [0.00329765732, 0.00329765732] (2.6e-10, 1.3e-9 R, too large);
-/// 6. found by `foveal-bench shape-check` (N = 10,000, seed 1, frame 181, pair 829-1020, the
-///    engine's own `shape_pose`): the engine says apart (gap 7.22e-8, the lower bound when GJK
-///    stops -1.45e-6) and the pair not colliding; the judge finds them touching. The same pose
-///    rounded differently in its last bits gives the engine's touching, depth 7.0e-8.
+/// 6. found by `foveal-bench shape-check` (N = 10,000, seed 1, after 181 steps, its frame 180
+///    counted from 0, pair 829-1020, the engine's own `shape_pose`): the engine says apart (gap
+///    7.22e-8, the lower bound when GJK stops -1.45e-6) and the pair not colliding; the judge
+///    finds them touching. The same pose rounded differently in its last bits gives the
+///    engine's touching, depth 7.0e-8.
 #[test]
 #[ignore = "engine: GJK stops on a repeated support point with a negative lower bound"]
 fn gjk_stops_early_on_a_repeated_support_point() {
@@ -565,11 +566,11 @@ fn gjk_stops_early_on_a_repeated_support_point() {
 
 /// A pose where the engine's contact says touching (depth 0) and its `intersects` apart, and the
 /// judge proves the stars 4.384e-4 (2.2e-3 R) apart (R = 0.2). Found by `foveal-bench
-/// shape-check` (N = 10,000, seed 1, origin (1e7, -1e7, 5e6), frame 61, pair 3587-8914, the
-/// engine's own `shape_pose`): in `contact`'s GJK for one cone pair a support point comes back
-/// one ulp from a vertex already in the simplex (so the exact-equality test for a repeat misses
-/// it), the tetrahedron is flat, the origin is read as enclosed, EPA fails on the flat simplex
-/// and the pair is reported touching at depth 0.
+/// shape-check` (N = 10,000, seed 1, origin (1e7, -1e7, 5e6), after 61 steps, its frame 60
+/// counted from 0, pair 3587-8914, the engine's own `shape_pose`): in `contact`'s GJK for one
+/// cone pair a support point comes back one ulp from a vertex already in the simplex (so the
+/// exact-equality test for a repeat misses it), the tetrahedron is flat, the origin is read as
+/// enclosed, EPA fails on the flat simplex and the pair is reported touching at depth 0.
 #[test]
 #[ignore = "engine: GJK reads a flat tetrahedron (a near-repeated support point) as enclosing"]
 fn gjk_reads_a_flat_simplex_as_enclosing() {
