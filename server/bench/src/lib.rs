@@ -14,6 +14,10 @@
 //!   scheduler.
 //! - [`calibrate`]: regenerates the priced scheduler's table and reports its reliability.
 //! - [`contact`]: first contacts under each truth, the gap between the drawn stars measured.
+//! - [`shape_check`]: every candidate pair of whole exact scenes, the engine's shape answer and
+//!   gap against the independent judge.
+//! - [`shape_oracle`]: an independent judge of whether two stars touch, and of their distance, by
+//!   branch and bound over patches of their surfaces (shared with the engine's tests by path).
 //! - [`gaze`]: the seeded fixation/saccade script and the recorded-trace reader.
 //! - [`runner`]: the `Instant` clock, one run, the plan, per-frame CSV records.
 //! - [`stats`]: per-run mean/sd, mean and 95% CI across seeds.
@@ -45,6 +49,8 @@ pub mod report;
 pub mod runner;
 pub mod scale;
 pub mod session;
+pub mod shape_check;
+pub mod shape_oracle;
 pub mod stats;
 pub mod stress;
 
