@@ -663,11 +663,13 @@ fn gjk(ka: &Cone, kb: &Cone, eps: f64, boolean: bool) -> Gjk {
             .iter()
             .any(|s| (s.w - w.w).length_squared() <= stall * stall);
         if vv - vw <= (1e-9 * vv).max(eps * vv.sqrt()) || stalled {
-            // Decided on the proven lower bound, not on |v|: a stalled search can stop short
-            // of the nearest point with v·w well below |v|², and a pair whose separation is not
-            // proven is not apart.
+            // A search that stalls with its bound well below zero (the plane through w does
+            // not separate by 100 tolerances) stopped short of the nearest point: such a pair
+            // is not proven apart and counts as touching. Otherwise |v| decides, within the
+            // grazing band of a few 1e-7 R where GJK's arithmetic on curved rims is exact no
+            // further.
             let lower = vw / vv.sqrt();
-            g.touching = lower <= eps;
+            g.touching = vv.sqrt() <= eps || (stalled && lower < -100.0 * eps);
             g.lower = lower.max(0.0);
             return g;
         }
@@ -678,10 +680,10 @@ fn gjk(ka: &Cone, kb: &Cone, eps: f64, boolean: bool) -> Gjk {
             return g;
         }
     }
-    // Out of iterations: what is proven decides.
+    // Out of iterations: as for a stall.
     let w = support(ka, kb, -g.v);
     let lower = g.v.dot(w.w) / g.v.length().max(f64::MIN_POSITIVE);
-    g.touching = lower <= eps;
+    g.touching = g.v.length() <= eps || lower < -100.0 * eps;
     g.lower = lower.max(0.0);
     g
 }

@@ -572,7 +572,6 @@ fn gjk_stops_early_on_a_repeated_support_point() {
 /// exact-equality test for a repeat misses it), the tetrahedron is flat, the origin is read as
 /// enclosed, EPA fails on the flat simplex and the pair is reported touching at depth 0.
 #[test]
-#[ignore = "engine: GJK reads a flat tetrahedron (a near-repeated support point) as enclosing"]
 fn gjk_reads_a_flat_simplex_as_enclosing() {
     let p = pose_from_rows(
         [
@@ -604,7 +603,6 @@ fn gjk_reads_a_flat_simplex_as_enclosing() {
 /// 3. centres 2.3e-159 apart: the cores' normal divides the offset by its length, whose square
 ///    underflows, 1.6e-7 too long.
 #[test]
-#[ignore = "engine: contact normals off unit length (see the comment)"]
 fn contact_normals_are_unit_pinned() {
     let inputs: [[f64; 8]; 3] = [
         [
