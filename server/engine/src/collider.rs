@@ -238,19 +238,7 @@ impl Collider {
     /// The pairs on this frame's collision list (real and deemed), in pair order. After an exact
     /// frame the narrow phase has listed them; otherwise every pair's status is read.
     pub fn collisions(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
-        let pairs = &self.narrow.pairs;
-        let listed = self.narrow.colliding();
-        let scanned = listed.is_none().then(|| {
-            pairs
-                .iter()
-                .filter(|p| p.status.is_collision())
-                .map(|p| (p.a, p.b))
-        });
-        let listed = listed.map(|l| l.map(|i| (pairs[i].a, pairs[i].b)));
-        listed
-            .into_iter()
-            .flatten()
-            .chain(scanned.into_iter().flatten())
+        self.collisions_settled().map(|(a, b, _)| (a, b))
     }
 
     /// [`Self::collisions`], each pair with whether it is a real collision (settled colliding)

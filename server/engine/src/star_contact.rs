@@ -901,21 +901,8 @@ fn epa(ka: &Cone, kb: &Cone, start: &[Vertex; 4], eps: f64) -> Option<Contact> {
             faces.push(f);
         }
     }
-    let plane = |verts: &[Vertex], f: &[usize; 3]| -> Option<(DVec3, f64)> {
-        let n = (verts[f[1]].w - verts[f[0]].w).cross(verts[f[2]].w - verts[f[0]].w);
-        let n = n.try_normalize()?;
-        Some((n, n.dot(verts[f[0]].w)))
-    };
     for _ in 0..MAX_ITERATIONS {
-        // The face nearest the origin.
-        let mut nearest: Option<(usize, DVec3, f64)> = None;
-        for (k, f) in faces.iter().enumerate() {
-            let (n, d) = plane(&verts, f)?;
-            if nearest.is_none_or(|(_, _, b)| d < b) {
-                nearest = Some((k, n, d));
-            }
-        }
-        let (k, n, d) = nearest?;
+        let (k, n, d) = nearest_face(&verts, &faces)?;
         let w = support(ka, kb, n);
         if w.w.dot(n) - d <= eps.max(1e-9 * d.abs()) {
             return Some(face_contact(&verts, &faces[k], n, d));
@@ -924,7 +911,7 @@ fn epa(ka: &Cone, kb: &Cone, start: &[Vertex; 4], eps: f64) -> Option<Contact> {
         let mut horizon: Vec<[usize; 2]> = Vec::new();
         let mut kept = Vec::with_capacity(faces.len() + 4);
         for f in &faces {
-            let (fnrm, fd) = plane(&verts, f)?;
+            let (fnrm, fd) = face_plane(&verts, f)?;
             if fnrm.dot(w.w) - fd > 0.0 {
                 for e in [[f[0], f[1]], [f[1], f[2]], [f[2], f[0]]] {
                     if let Some(pos) = horizon.iter().position(|h| *h == [e[1], e[0]]) {
@@ -948,15 +935,28 @@ fn epa(ka: &Cone, kb: &Cone, start: &[Vertex; 4], eps: f64) -> Option<Contact> {
         faces = kept;
     }
     // Not converged within the cap: the nearest face so far is within the last improvement.
+    let (k, n, d) = nearest_face(&verts, &faces)?;
+    Some(face_contact(&verts, &faces[k], n, d))
+}
+
+/// A face's outward unit normal and its distance from the origin; `None` if it is degenerate.
+fn face_plane(verts: &[Vertex], f: &[usize; 3]) -> Option<(DVec3, f64)> {
+    let n = (verts[f[1]].w - verts[f[0]].w).cross(verts[f[2]].w - verts[f[0]].w);
+    let n = n.try_normalize()?;
+    Some((n, n.dot(verts[f[0]].w)))
+}
+
+/// The polytope's face nearest the origin (index, normal, distance); `None` if a face is
+/// degenerate.
+fn nearest_face(verts: &[Vertex], faces: &[[usize; 3]]) -> Option<(usize, DVec3, f64)> {
     let mut nearest: Option<(usize, DVec3, f64)> = None;
     for (k, f) in faces.iter().enumerate() {
-        let (n, d) = plane(&verts, f)?;
+        let (n, d) = face_plane(verts, f)?;
         if nearest.is_none_or(|(_, _, b)| d < b) {
             nearest = Some((k, n, d));
         }
     }
-    let (k, n, d) = nearest?;
-    Some(face_contact(&verts, &faces[k], n, d))
+    nearest
 }
 
 /// The contact given by EPA's nearest face: the origin's projection `n d` on it, in barycentric
