@@ -50,7 +50,10 @@ pub struct SceneConfig {
     /// World position of the volume's minimum corner (scene units).
     pub origin: [f64; 3],
     /// What "colliding" means: the drawn stars touch (default), or the paper's leaf spheres
-    /// overlap (docs/DESIGN.md "Exact answer").
+    /// overlap (docs/DESIGN.md "Exact answer"). A serialised config without this field was
+    /// written before it existed, under the leaf truth, and is read as such: a session recorded
+    /// then replays as it ran.
+    #[serde(default = "Truth::before_it_was_recorded")]
     pub truth: Truth,
 }
 
@@ -86,6 +89,12 @@ impl Truth {
     /// Parse a [`Self::name`].
     pub fn from_name(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|t| t.name() == s)
+    }
+
+    /// The truth of a serialised config that does not name one: every config written before
+    /// the truth was recorded ran under the leaf spheres.
+    pub fn before_it_was_recorded() -> Self {
+        Self::LeafSpheres
     }
 }
 
@@ -421,6 +430,20 @@ mod tests {
         let mut c = SimConfig::default();
         c.scene.origin[1] = 1e12;
         assert_eq!(c.validate().map_err(|e| e.field), Err("scene.origin.y"));
+    }
+
+    /// A config serialised before the truth existed replays under the leaf truth it ran
+    /// under; one that names its truth keeps it; the programmatic default is the shape.
+    #[test]
+    fn a_config_without_a_truth_is_read_as_the_leaf_truth() {
+        let mut json = serde_json::to_value(SceneConfig::default()).expect("serialises");
+        assert_eq!(json["truth"], "shape");
+        let named: SceneConfig = serde_json::from_value(json.clone()).expect("parses");
+        assert_eq!(named.truth, Truth::Shape);
+        json.as_object_mut().expect("object").remove("truth");
+        let old: SceneConfig = serde_json::from_value(json).expect("parses");
+        assert_eq!(old.truth, Truth::LeafSpheres);
+        assert_eq!(SceneConfig::default().truth, Truth::Shape);
     }
 
     #[test]
