@@ -1364,13 +1364,15 @@ impl Lane<'_> {
                     tree.geometry().intersects_or_bound(&pose)
                 };
                 if let Some(clearance) = proof {
-                    let st = &mut self.pairs[i];
-                    st.last = m.leaves;
-                    st.levels = [depth, depth];
-                    if let Some(out) = self.memo_out.get_mut(i) {
-                        *out = Memo::new(p.a, p.b, m.leaves, clearance, &pose);
-                    }
-                    return resolve(st, PairStatus::Separate, depth);
+                    let memo = self.memo_out.get_mut(i);
+                    return settle_apart(
+                        &mut self.pairs[i],
+                        memo,
+                        m.leaves,
+                        clearance,
+                        &pose,
+                        depth,
+                    );
                 }
             }
             if let Some(w) = self.witness.get(a).filter(|w| w.partner == p.b) {
@@ -1493,17 +1495,19 @@ impl Lane<'_> {
             *self.tests += SHAPE_TEST_COST;
             match tree.geometry().intersects_or_bound(&pose) {
                 Some(clearance) => {
-                    let st = &mut self.pairs[i];
                     let leaf = tree.leaves().start as u16;
+                    self.arena.truncate(p.list_start as usize);
                     // A pair of leaves as its last overlap marks it a near miss (see
                     // `near_miss`); which leaves is of no consequence for a settled pair.
-                    st.last = [leaf, leaf];
-                    st.levels = [depth, depth];
-                    if let Some(out) = self.memo_out.get_mut(i) {
-                        *out = Memo::new(p.a, p.b, st.last, clearance, &pose);
-                    }
-                    self.arena.truncate(p.list_start as usize);
-                    return resolve(st, PairStatus::Separate, depth);
+                    let memo = self.memo_out.get_mut(i);
+                    return settle_apart(
+                        &mut self.pairs[i],
+                        memo,
+                        [leaf, leaf],
+                        clearance,
+                        &pose,
+                        depth,
+                    );
                 }
                 None => touching = true,
             }
@@ -1976,6 +1980,25 @@ pub fn shape_separation(tree: &SphereTree, world: &World, a: usize, b: usize) ->
             point_b,
         } => (distance, to_world(point_a), to_world(point_b)),
     }
+}
+
+/// Settle pair `st` apart on the shape, as a near miss whose leaf pair is `leaves`, leaving its
+/// proof (at least `clearance` apart at `pose`) in `memo` for the next frame.
+#[inline]
+fn settle_apart(
+    st: &mut PairState,
+    memo: Option<&mut Memo>,
+    leaves: [u16; 2],
+    clearance: f64,
+    pose: &Pose,
+    depth: u8,
+) -> StepOutcome {
+    st.last = leaves;
+    st.levels = [depth, depth];
+    if let Some(out) = memo {
+        *out = Memo::new(st.a, st.b, leaves, clearance, pose);
+    }
+    resolve(st, PairStatus::Separate, depth)
 }
 
 fn resolve(st: &mut PairState, status: PairStatus, level: u8) -> StepOutcome {
