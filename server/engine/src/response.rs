@@ -4,6 +4,8 @@
 //! already separating keeps its velocities, so an overlap that persists for a few frames does not
 //! make the bodies swap back and forth (jitter, sticking).
 
+use rayon::prelude::*;
+
 use crate::math::Vec3;
 use crate::narrow_phase::shape_pose;
 use crate::prefetch::Prefetcher;
@@ -24,6 +26,9 @@ const AHEAD: usize = 32;
 #[derive(Debug, Default)]
 pub struct Response {
     pairs: Vec<(u32, u32)>,
+    /// The shape truth's pairs (with whether each is a real collision) and their normals.
+    shape_pairs: Vec<(u32, u32, bool)>,
+    normals: Vec<Vec3>,
 }
 
 impl Response {
@@ -65,16 +70,37 @@ impl Response {
         world: &mut World,
         tree: &SphereTree,
         pairs: impl IntoIterator<Item = (u32, u32, bool)>,
+        threads: usize,
     ) -> u32 {
-        let mut n = 0;
-        for (a, b, real) in pairs {
+        self.shape_pairs.clear();
+        self.shape_pairs.extend(pairs);
+        // The normals depend on the poses alone, which the exchanges leave alone: they are found
+        // first, on up to `threads` threads (a real collision's contact costs microseconds, the
+        // exchange nanoseconds), and the exchanges then run in the list's order as before.
+        let world_ref: &World = world;
+        let normal = |&(a, b, real): &(u32, u32, bool)| -> Vec3 {
             let (a, b) = (a as usize, b as usize);
-            let normal = if real {
-                let c = tree.geometry().contact(&shape_pose(world, a, b));
-                world.orientation[a] * c.normal()
+            if real {
+                let c = tree.geometry().contact(&shape_pose(world_ref, a, b));
+                world_ref.orientation[a] * c.normal()
             } else {
-                (world.position[b] - world.position[a]).normalize_or(Vec3::X)
-            };
+                (world_ref.position[b] - world_ref.position[a]).normalize_or(Vec3::X)
+            }
+        };
+        let real = self.shape_pairs.iter().filter(|p| p.2).count();
+        self.normals.clear();
+        if threads > 1 && real >= PARALLEL_CONTACTS {
+            self.shape_pairs
+                .par_iter()
+                .with_min_len(PARALLEL_CONTACTS / 2)
+                .map(normal)
+                .collect_into_vec(&mut self.normals);
+        } else {
+            self.normals.extend(self.shape_pairs.iter().map(normal));
+        }
+        let mut n = 0;
+        for (&(a, b, _), &normal) in self.shape_pairs.iter().zip(&self.normals) {
+            let (a, b) = (a as usize, b as usize);
             let approach = (world.velocity[b] - world.velocity[a]).dot(normal);
             if approach < 0.0 {
                 let dv = normal * approach;
@@ -86,6 +112,10 @@ impl Response {
         n
     }
 }
+
+/// Real collisions in a frame from which the shape truth's contacts are found on more than one
+/// thread: below it the hand-off costs more than the contacts (a few microseconds each).
+const PARALLEL_CONTACTS: usize = 64;
 
 /// Pairs' worth of storage a [`Response`] keeps however few the last frame had.
 const KEEP: usize = 4096;

@@ -554,6 +554,7 @@ impl Simulation {
                 &mut self.world,
                 &self.tree,
                 self.collider.collisions_settled(),
+                self.config.threads as usize,
             ),
         }
     }
