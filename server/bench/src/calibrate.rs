@@ -2,8 +2,8 @@
 //! measures how well it is calibrated on seeds it was not fitted on.
 //!
 //! Training runs: N = 500, 2,000 and 10,000, seeds 1-2; held-out runs: the same N, seeds 101-102.
-//! The table (`server/engine/src/schedule/calibration_table_shape.rs` for the shape truth,
-//! `calibration_table.rs` for the leaf truth) is written as Rust source; the
+//! The table (`server/engine/data/calibration-shape.bin` for the shape truth,
+//! `calibration-leaf-spheres.bin` for the leaf truth) is written in the engine's binary format; the
 //! reliability report (predicted probability of "not colliding" against the observed frequency, in
 //! ten bins, with the Brier score and the expected calibration error) is written as markdown.
 

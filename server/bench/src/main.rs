@@ -295,22 +295,28 @@ fn replay(file: &std::path::Path, options: &SessionOptions) -> Result<()> {
 
 #[derive(Debug, Args)]
 struct CalibrateArgs {
-    /// Write the table as Rust source here (the engine's
-    /// server/engine/src/schedule/calibration_table.rs); without it only the report is printed.
+    /// Write the table here, in the engine's binary format (the shipped ones are
+    /// server/engine/data/calibration-shape.bin and calibration-leaf-spheres.bin); without it
+    /// only the report is printed.
     #[arg(long)]
     write: Option<PathBuf>,
+    /// Compare the table with this file instead of writing it, and fail naming the first bin
+    /// that differs: the shipped tables must be what this command writes for its pinned seeds.
+    #[arg(long, conflicts_with = "write")]
+    check: Option<PathBuf>,
     /// Write the reliability report (markdown) here as well as to stdout.
     #[arg(long)]
     report: Option<PathBuf>,
     /// The truth to calibrate on: `shape` (the default; its table is
-    /// server/engine/src/schedule/calibration_table_shape.rs) or `leaf-spheres` (the paper's;
-    /// calibration_table.rs).
+    /// server/engine/data/calibration-shape.bin) or `leaf-spheres` (the paper's;
+    /// calibration-leaf-spheres.bin).
     #[arg(long, default_value = "shape")]
     truth: foveal_engine::Truth,
 }
 
 fn calibrate(args: &CalibrateArgs) -> Result<()> {
     use foveal_bench::calibrate as cal;
+    use foveal_engine::schedule::calibration::Calibration;
     let cfg = cal::CalibrateConfig {
         truth: args.truth,
         ..cal::CalibrateConfig::default()
@@ -321,18 +327,39 @@ fn calibrate(args: &CalibrateArgs) -> Result<()> {
     if let Some(path) = &args.report {
         std::fs::write(path, &md).with_context(|| format!("writing {}", path.display()))?;
     }
+    let bytes = out.calibration.to_bytes();
     if let Some(path) = &args.write {
-        let command = match args.truth {
-            foveal_engine::Truth::Shape => {
-                "cargo run --release -p foveal-bench -- calibrate --truth shape --write server/engine/src/schedule/calibration_table_shape.rs"
-            }
-            foveal_engine::Truth::LeafSpheres => {
-                "cargo run --release -p foveal-bench -- calibrate --truth leaf-spheres --write server/engine/src/schedule/calibration_table.rs"
-            }
-        };
-        let src = out.calibration.to_rust_source(command);
-        std::fs::write(path, src).with_context(|| format!("writing {}", path.display()))?;
+        std::fs::write(path, &bytes).with_context(|| format!("writing {}", path.display()))?;
         eprintln!("wrote {}", path.display());
+    }
+    if let Some(path) = &args.check {
+        let shipped = std::fs::read(path).with_context(|| format!("reading {}", path.display()))?;
+        if shipped != bytes {
+            let detail = match Calibration::from_bytes(&shipped) {
+                Err(e) => format!("it does not read: {e}"),
+                Ok(old) => match old
+                    .bins()
+                    .iter()
+                    .zip(out.calibration.bins())
+                    .position(|(a, b)| a != b)
+                {
+                    Some(k) => format!(
+                        "bin {k} differs: shipped {:?}, calibrated now {:?}",
+                        old.bins()[k],
+                        out.calibration.bins()[k]
+                    ),
+                    None => "its length differs".to_string(),
+                },
+            };
+            bail!(
+                "{} is stale ({detail}): the engine changed what its traversal states predict; \
+                 regenerate it with `cargo run --release -p foveal-bench -- calibrate --truth {} --write {}`",
+                path.display(),
+                args.truth.name(),
+                path.display()
+            );
+        }
+        eprintln!("{} is current", path.display());
     }
     Ok(())
 }

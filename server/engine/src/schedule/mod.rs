@@ -5,8 +5,6 @@
 //! line in [`for_kind`]. Pairs left open when a scheduler returns are deemed colliding by the caller.
 
 pub mod calibration;
-mod calibration_table;
-mod calibration_table_shape;
 mod expected_gain;
 pub mod priced;
 pub mod priority;
