@@ -16,14 +16,14 @@ use foveal_client::bridge::{self, BridgeReport, ForwardOptions, StopReason};
 use foveal_client::gaze::lsl::{ChannelMap, Units};
 use foveal_client::gaze::opengaze;
 use foveal_client::gaze::script::{GazeScript, ScriptedGaze};
-use foveal_client::gaze::{Eye, ScreenPx};
+use foveal_client::gaze::{Binocular, Eye, ScreenPx};
 use foveal_client::health;
 use foveal_client::load::{self, LoadOptions};
 use foveal_client::lsl::{self, LslOptions};
 use foveal_client::pacer::Pace;
 use foveal_client::pupil::{self, PupilOptions};
 use foveal_client::sender::{GazeSender, Transport};
-use foveal_client::source::{self, GazepointOptions, RecordingFormat, SourceItem};
+use foveal_client::source::{self, GazepointOptions, ReadOptions, RecordingFormat, SourceItem};
 use foveal_client::watch::{self, WatchOptions};
 use tokio::sync::mpsc;
 use tracing::info;
@@ -76,6 +76,27 @@ enum EyesArg {
     Right,
     /// Each eye detected apart.
     Both,
+}
+
+impl EyesArg {
+    fn binocular(self) -> Binocular {
+        match self {
+            Self::Mean => Binocular::Mean,
+            Self::Left => Binocular::Left,
+            Self::Right => Binocular::Right,
+            Self::Both => Binocular::Both,
+        }
+    }
+}
+
+/// The eyes of a binocular recording, for the bridges and replays.
+#[derive(Debug, Args)]
+struct EyesOpt {
+    /// Eyes of a binocular recording to send: their mean, one of them, or both (two samples an
+    /// instant, each tagged with its eye, for a server that combines them itself:
+    /// foveal-server --gaze-eyes). A monocular recording sends its one eye.
+    #[arg(long, value_enum, default_value = "mean")]
+    eyes: EyesArg,
 }
 
 #[derive(Debug, Args)]
@@ -290,6 +311,8 @@ enum ScriptCommand {
         speed: SpeedArgs,
         #[command(flatten)]
         screen: ScreenArg,
+        #[command(flatten)]
+        eyes: EyesOpt,
     },
 }
 
@@ -325,17 +348,25 @@ struct BridgeArgs {
 
 #[derive(Debug, Subcommand)]
 enum TrackerCommand {
-    /// CSV gaze lines from a file or, with `-` or nothing, from stdin, forwarded line by line as
-    /// they arrive. Layouts: `t_s,x,y[,validity][,fixation]` (normalised) or `t_s,xpos,ypos`
-    /// (pixels; screen size from --screen or a `# screen WxH px` comment).
+    /// CSV gaze from a file, sent at the file's own pace (its timestamps; --speed to change),
+    /// or with `-` or nothing from stdin, forwarded line by line as the lines arrive. Layouts:
+    /// `t_s,x,y[,validity][,fixation]` (normalised) or `t_s,xpos,ypos` (pixels; screen size
+    /// from --screen or a `# screen WxH px` comment), or either with `_left`/`_right` columns.
     Csv {
         /// The file, or `-` for stdin.
         file: Option<PathBuf>,
-        /// Pace by the timestamps at this speed instead of forwarding lines as they arrive.
-        #[arg(long)]
+        /// Pace by the timestamps at this speed (a file's default is 1, stdin's is to forward
+        /// lines as they arrive).
+        #[arg(long, conflicts_with = "as_fast_as_possible")]
         speed: Option<f64>,
+        /// Send a file without waiting between samples. A server's gaze rate limit then drops
+        /// most of a long recording (the bridge says how much before it starts).
+        #[arg(long)]
+        as_fast_as_possible: bool,
         #[command(flatten)]
         screen: ScreenArg,
+        #[command(flatten)]
+        eyes: EyesOpt,
     },
     /// An EyeLink ASC file, replayed at its own pace.
     Asc {
@@ -345,6 +376,8 @@ enum TrackerCommand {
         speed: SpeedArgs,
         #[command(flatten)]
         screen: ScreenArg,
+        #[command(flatten)]
+        eyes: EyesOpt,
     },
     /// A Gazepoint tracker over the Open Gaze API (TCP).
     Gazepoint {
@@ -519,7 +552,6 @@ async fn run(cli: Cli) -> Result<ExitCode> {
 }
 
 fn fixations(args: FixationsArgs) -> Result<ExitCode> {
-    use foveal_client::gaze::Binocular;
     use foveal_client::gaze::detect::{DetectorParams, IdtParams, IvtParams};
     use foveal_client::gaze::geometry::ViewingGeometry;
 
@@ -562,16 +594,18 @@ fn fixations(args: FixationsArgs) -> Result<ExitCode> {
         detector,
         geometry,
         screen: args.screen.screen,
-        eyes: match args.eyes {
-            EyesArg::Mean => Binocular::Mean,
-            EyesArg::Left => Binocular::Left,
-            EyesArg::Right => Binocular::Right,
-            EyesArg::Both => Binocular::Both,
-        },
+        eyes: args.eyes.binocular(),
     };
     let report = foveal_client::fixations::run(&args.file, args.compare.as_deref(), &options)?;
     for line in report.bad_lines.iter().take(10) {
         eprintln!("skipped: {line}");
+    }
+    for b in &report.backwards {
+        eprintln!(
+            "dropped: {} sample(s) of eye {} from t = {:.4} s go back before t = {:.4} s, an \
+             earlier sample's time; the detector treats them as missing",
+            b.samples, b.eye, b.first_s, b.latest_s
+        );
     }
     eprintln!(
         "{} samples ({} missing), {} lines skipped, {} fixations",
@@ -599,11 +633,17 @@ async fn gaze(args: GazeArgs) -> Result<ExitCode> {
             file,
             speed,
             screen,
+            eyes,
         } => {
-            let (format, rx) = source::recording(file, None, screen.screen)
-                .with_context(|| format!("open {}", file.display()))?;
+            let pace = speed.pace()?;
+            let options = ReadOptions {
+                format: None,
+                screen: screen.screen,
+                eyes: eyes.eyes.binocular(),
+            };
+            let (format, rx) = open_recording(file, options, pace)?;
             info!(file = %file.display(), ?format, "replaying");
-            (format!("replay:{}", file.display()), rx, speed.pace()?)
+            (format!("replay:{}", file.display()), rx, pace)
         }
         ScriptCommand::Fixed { .. }
         | ScriptCommand::Circle { .. }
@@ -643,27 +683,33 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
         TrackerCommand::Csv {
             file,
             speed,
+            as_fast_as_possible,
             screen,
+            eyes,
         } => {
-            let pace = match speed {
-                Some(speed) => Pace::scaled(*speed).map_err(anyhow::Error::msg)?,
-                None => Pace::AsFastAsPossible,
-            };
-            match file.as_deref() {
+            let speed = speed
+                .map(|s| Pace::scaled(s).map_err(anyhow::Error::msg))
+                .transpose()?;
+            let eyes = eyes.eyes.binocular();
+            match file.as_deref().filter(|p| p.as_os_str() != "-") {
+                // Live lines: sent as they arrive unless a speed is given.
                 None => (
                     "bridge:csv:stdin".to_owned(),
-                    source::stdin_csv(screen.screen),
-                    pace,
-                ),
-                Some(path) if path.as_os_str() == "-" => (
-                    "bridge:csv:stdin".to_owned(),
-                    source::stdin_csv(screen.screen),
-                    pace,
+                    source::stdin_csv(screen.screen, eyes),
+                    speed.unwrap_or(Pace::AsFastAsPossible),
                 ),
                 Some(path) => {
-                    let (_, rx) =
-                        source::recording(path, Some(RecordingFormat::Csv), screen.screen)
-                            .with_context(|| format!("open {}", path.display()))?;
+                    let pace = match (speed, as_fast_as_possible) {
+                        (Some(pace), _) => pace,
+                        (None, true) => Pace::AsFastAsPossible,
+                        (None, false) => Pace::REAL_TIME,
+                    };
+                    let options = ReadOptions {
+                        format: Some(RecordingFormat::Csv),
+                        screen: screen.screen,
+                        eyes,
+                    };
+                    let (_, rx) = open_recording(path, options, pace)?;
                     (format!("bridge:csv:{}", path.display()), rx, pace)
                 }
             }
@@ -672,10 +718,16 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
             file,
             speed,
             screen,
+            eyes,
         } => {
-            let (_, rx) = source::recording(file, Some(RecordingFormat::Asc), screen.screen)
-                .with_context(|| format!("open {}", file.display()))?;
-            (format!("bridge:asc:{}", file.display()), rx, speed.pace()?)
+            let pace = speed.pace()?;
+            let options = ReadOptions {
+                format: Some(RecordingFormat::Asc),
+                screen: screen.screen,
+                eyes: eyes.eyes.binocular(),
+            };
+            let (_, rx) = open_recording(file, options, pace)?;
+            (format!("bridge:asc:{}", file.display()), rx, pace)
         }
         TrackerCommand::Gazepoint {
             host,
@@ -759,7 +811,39 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
     send(&args.server, &args.send, &name, source, pace).await
 }
 
-/// Connects, forwards `source` and prints the report; exit 1 if the source failed.
+/// Samples a recording is scanned for before it is sent (its rate, its eyes, whether it has
+/// any sample at all): a fraction of a second of reading, however long the file.
+const SCAN_SAMPLES: u64 = 100_000;
+
+/// Opens a recording to send at `pace`, after a look ahead: a file with nothing to send is one
+/// clear error (not thousands of skipped lines and exit 0), an eye asked of a monocular file
+/// and a pace over a server's default gaze rate limit are said before anything is sent.
+fn open_recording(
+    path: &std::path::Path,
+    options: ReadOptions,
+    pace: Pace,
+) -> Result<(RecordingFormat, mpsc::Receiver<SourceItem>)> {
+    let scan = source::scan_recording(path, options, SCAN_SAMPLES)
+        .with_context(|| format!("read {}", path.display()))?;
+    if let Some(why) = scan.nothing_to_send(path) {
+        bail!("{why}");
+    }
+    if options.eyes != Binocular::Mean && !scan.binocular {
+        tracing::warn!(
+            "--eyes {:?} has no effect: {} records one eye only ({:?}), which is sent",
+            options.eyes,
+            path.display(),
+            scan.eye.unwrap_or_default()
+        );
+    }
+    if let Some(warning) = bridge::pace_warning(pace, scan.rate_hz, scan.samples, scan.complete) {
+        tracing::warn!("{warning}");
+    }
+    source::recording(path, options).with_context(|| format!("open {}", path.display()))
+}
+
+/// Connects, forwards `source` and prints the report; exit 1 if the source failed or sent
+/// nothing.
 async fn send(
     server: &ServerArgs,
     send: &SendArgs,
@@ -780,6 +864,10 @@ async fn send(
     };
     let report: BridgeReport = bridge::forward(source, sender, options, ctrl_c()).await?;
     println!("{report}");
+    if let Some(why) = report.nothing_sent() {
+        eprintln!("error: {name}: {why}");
+        return Ok(ExitCode::FAILURE);
+    }
     Ok(match report.stopped {
         StopReason::SourceFailed(_) => ExitCode::FAILURE,
         _ => ExitCode::SUCCESS,

@@ -63,7 +63,8 @@ async fn replay(addr: &str, transport: Transport, format: RecordingFormat) -> Br
         RecordingFormat::Csv => RECORDING,
         RecordingFormat::Asc => "eyelink-1000hz-left.asc",
     };
-    let (detected, rx) = source::recording(&gaze_data(name), None, None).expect("open recording");
+    let (detected, rx) = source::recording(&gaze_data(name), source::ReadOptions::default())
+        .expect("open recording");
     assert_eq!(detected, format);
     let client = foveal_client::connect(addr).await.expect("connect");
     let sender = GazeSender::open(client, transport, "test:replay").expect("sender");
