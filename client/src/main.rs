@@ -448,6 +448,10 @@ enum TrackerCommand {
         /// Keep the outlet's time stamps on its own clock.
         #[arg(long)]
         no_time_correction: bool,
+        /// When the outlet goes away, exit with an error (status 1) instead of waiting for it to
+        /// come back (found again by name, type and source id) and carrying on.
+        #[arg(long)]
+        no_reconnect: bool,
     },
 }
 
@@ -780,6 +784,7 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
             screen,
             resolve_timeout,
             no_time_correction,
+            no_reconnect,
         } => {
             let units = match (units, screen.screen) {
                 (UnitsArg::Normalised, None) => Units::Normalised,
@@ -799,6 +804,7 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
                 },
                 resolve_timeout: seconds("--resolve-timeout", *resolve_timeout)?,
                 time_correction: !no_time_correction,
+                reconnect: !no_reconnect,
                 ..LslOptions::default()
             };
             let label = format!(
