@@ -18,7 +18,7 @@ use foveal_client::gaze::opengaze;
 use foveal_client::gaze::script::{GazeScript, ScriptedGaze};
 use foveal_client::gaze::{Binocular, Eye, ScreenPx};
 use foveal_client::health;
-use foveal_client::load::{self, LoadOptions};
+use foveal_client::load::{self, ChaosOptions, LoadOptions};
 use foveal_client::lsl::{self, LslOptions};
 use foveal_client::pacer::Pace;
 use foveal_client::pupil::{self, PupilOptions};
@@ -199,12 +199,21 @@ struct LoadArgs {
     /// Watchers ask for poses.
     #[arg(long)]
     poses: bool,
-    /// Seconds to run (T).
-    #[arg(long, default_value_t = 60.0)]
-    seconds: f64,
+    /// Seconds to run (T); default 60, or 600 with --chaos.
+    #[arg(long, visible_alias = "duration")]
+    seconds: Option<f64>,
     /// The server's process id, for its RSS (default: the process listening on the port).
     #[arg(long)]
     server_pid: Option<u32>,
+    /// A chaos run: the same load while clients are killed mid-call (one a second), 200
+    /// connections are left idle and 16 request bodies stalled mid-message (renewed every 10 s),
+    /// and Configure is called every second (needs an admin token on a server with roles); a
+    /// fresh client's connect and GetStatus is timed every 250 ms throughout.
+    #[arg(long)]
+    chaos: bool,
+    /// Token for Configure in a chaos run (default: --token).
+    #[arg(long, env = "FOVEAL_ADMIN_TOKEN", hide_env_values = true)]
+    admin_token: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -953,8 +962,11 @@ async fn health(args: HealthArgs) -> Result<ExitCode> {
 }
 
 async fn run_load(args: LoadArgs) -> Result<ExitCode> {
-    if !(args.seconds.is_finite() && args.seconds > 0.0) {
-        bail!("--seconds must be a positive number, not {}", args.seconds);
+    let seconds = args
+        .seconds
+        .unwrap_or(if args.chaos { 600.0 } else { 60.0 });
+    if !(seconds.is_finite() && seconds > 0.0) {
+        bail!("--seconds (--duration) must be a positive number, not {seconds}");
     }
     let base = args.server.options()?;
     let with = |token: &Option<String>| ConnectOptions {
@@ -970,8 +982,12 @@ async fn run_load(args: LoadArgs) -> Result<ExitCode> {
         watchers: args.watchers,
         stalled: args.stalled,
         poses: args.poses,
-        duration: Duration::from_secs_f64(args.seconds),
+        duration: Duration::from_secs_f64(seconds),
         server_pid: args.server_pid,
+        chaos: args.chaos.then(|| ChaosOptions {
+            admin: with(&args.admin_token),
+            ..ChaosOptions::default()
+        }),
         ..LoadOptions::default()
     };
     info!(
@@ -979,7 +995,8 @@ async fn run_load(args: LoadArgs) -> Result<ExitCode> {
         rate_hz = options.rate_hz,
         watchers = options.watchers,
         stalled = options.stalled,
-        seconds = args.seconds,
+        seconds,
+        chaos = args.chaos,
         "loading"
     );
     let report = load::run(&options).await?;
