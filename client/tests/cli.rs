@@ -559,3 +559,18 @@ async fn the_file_bridges_send_the_eye_asked_for() {
     let _ = std::fs::remove_file(path);
     server.stop().await;
 }
+
+/// The bridges warn about a server's default gaze rate limit before sending: the figure they
+/// quote is the server's.
+#[test]
+fn the_rate_limit_the_bridges_quote_is_the_servers_default() {
+    let limits = foveal_server::Limits::default();
+    assert_eq!(
+        foveal_client::bridge::SERVER_DEFAULT_GAZE_RATE_HZ,
+        limits.max_gaze_rate_hz
+    );
+    assert_eq!(
+        foveal_client::bridge::SERVER_DEFAULT_GAZE_BURST,
+        limits.max_gaze_rate_hz / 4.0
+    );
+}
