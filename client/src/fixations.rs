@@ -11,11 +11,11 @@ use std::io::{BufReader, Read, Write};
 use std::path::Path;
 
 use crate::ClientError;
-use crate::gaze::agreement::{Agreement, Interval, compare};
+use crate::gaze::agreement::{Agreement, Interval, compare_groups};
 use crate::gaze::asc::AscReader;
 use crate::gaze::csv::CsvGazeReader;
 use crate::gaze::detect::{Detector, DetectorParams, FixationEvent};
-use crate::gaze::fixation_list::{self, HEADER, ListedFixation};
+use crate::gaze::fixation_list::{self, HEADER, ListedFixation, eye_code};
 use crate::gaze::geometry::ViewingGeometry;
 use crate::gaze::{Binocular, Eye, GazeSample, ParseError, ScreenPx};
 use crate::source::{RecordingFormat, detect_format};
@@ -44,8 +44,36 @@ pub struct FixationReport {
     pub bad_lines: Vec<String>,
     /// Fixations found, in order (per eye with [`Binocular::Both`]).
     pub fixations: Vec<ListedFixation>,
-    /// Agreement with the reference list, if one was given.
+    /// Agreement with the reference list, if one was given: pooled over the eyes, each eye's
+    /// detections matched only against the same eye's reference fixations.
     pub agreement: Option<Agreement>,
+    /// With more than one eye scored, each eye's own agreement, by list code (0 left, 1 right).
+    pub per_eye: Vec<(u8, Agreement)>,
+    /// Runs of samples whose timestamps went back before an earlier sample of the same eye: the
+    /// detector cannot use them (it treats them as missing), so the caller says so.
+    pub backwards: Vec<BackwardsBlock>,
+}
+
+/// A run of consecutive samples of one eye stamped earlier than a sample before them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BackwardsBlock {
+    /// The eye's list code (0 left, 1 right, 2 both or unknown).
+    pub eye: u8,
+    /// Samples in the run.
+    pub samples: u64,
+    /// Time of the run's first sample, seconds from the recording's first sample.
+    pub first_s: f64,
+    /// The latest time seen before the run, which its samples are earlier than, same origin.
+    pub latest_s: f64,
+}
+
+/// The name of an eye's list code, for messages.
+fn eye_name(code: u8) -> &'static str {
+    match code {
+        0 => "left",
+        1 => "right",
+        _ => "both/unknown",
+    }
 }
 
 /// Reads every sample of a recording (CSV or ASC, from its extension or content).
@@ -97,25 +125,125 @@ fn read_samples(
     Ok((samples, screen))
 }
 
-/// Runs one detector per eye present (one in all, unless the eyes are given apart).
-fn detect(options: &FixationOptions, samples: &[GazeSample]) -> Vec<FixationEvent> {
-    let mut detectors: Vec<(Eye, Detector)> = Vec::new();
+/// What [`detect`] found: the fixations, the eyes it ran on and the runs of backwards samples.
+struct Detection {
+    events: Vec<FixationEvent>,
+    /// List codes of the eyes a detector ran on, in order of appearance.
+    eyes: Vec<u8>,
+    backwards: Vec<BackwardsBlock>,
+}
+
+/// Runs one detector per eye present (one in all, unless the eyes are given apart), and notes
+/// the runs of samples stamped before an earlier sample of their eye (times relative to
+/// `origin_s`).
+fn detect(options: &FixationOptions, samples: &[GazeSample], origin_s: f64) -> Detection {
+    struct PerEye {
+        eye: Eye,
+        detector: Detector,
+        latest_s: f64,
+        /// Index in `backwards` of the run the previous sample was part of.
+        open_run: Option<usize>,
+    }
+    let mut eyes: Vec<PerEye> = Vec::new();
     let mut events = Vec::new();
+    let mut backwards: Vec<BackwardsBlock> = Vec::new();
     for s in samples {
-        let index = match detectors.iter().position(|(eye, _)| *eye == s.eye) {
+        let index = match eyes.iter().position(|e| e.eye == s.eye) {
             Some(i) => i,
             None => {
-                detectors.push((s.eye, Detector::new(options.detector, options.geometry)));
-                detectors.len() - 1
+                eyes.push(PerEye {
+                    eye: s.eye,
+                    detector: Detector::new(options.detector, options.geometry),
+                    latest_s: f64::NEG_INFINITY,
+                    open_run: None,
+                });
+                eyes.len() - 1
             }
         };
-        events.extend(detectors[index].1.push(s).finished);
+        let per_eye = &mut eyes[index];
+        if s.t_s < per_eye.latest_s {
+            match per_eye.open_run {
+                Some(run) => backwards[run].samples += 1,
+                None => {
+                    per_eye.open_run = Some(backwards.len());
+                    backwards.push(BackwardsBlock {
+                        eye: eye_code(s.eye),
+                        samples: 1,
+                        first_s: s.t_s - origin_s,
+                        latest_s: per_eye.latest_s - origin_s,
+                    });
+                }
+            }
+        } else {
+            per_eye.open_run = None;
+            per_eye.latest_s = s.t_s;
+        }
+        events.extend(per_eye.detector.push(s).finished);
     }
-    for (_, d) in &mut detectors {
-        events.extend(d.finish());
+    for e in &mut eyes {
+        events.extend(e.detector.finish());
     }
     events.sort_by(|a, b| a.start_s.total_cmp(&b.start_s));
-    events
+    let mut codes: Vec<u8> = Vec::new();
+    for e in &eyes {
+        let code = eye_code(e.eye);
+        if !codes.contains(&code) {
+            codes.push(code);
+        }
+    }
+    Detection {
+        events,
+        eyes: codes,
+        backwards,
+    }
+}
+
+/// The reference fixations a detection on eye `eye` (list code) is scored against: the same
+/// eye's. A reference that does not say the eye (all code 2) serves any eye, and a reference of
+/// one eye only serves a detection on the mean of the eyes; anything else would let one eye's
+/// detection match the other eye's fixation, so it is refused, naming what the list holds.
+fn reference_for(eye: u8, reference: &[ListedFixation]) -> Result<Vec<Interval>, String> {
+    let mut listed: Vec<u8> = reference.iter().map(|f| f.eye).collect();
+    listed.sort_unstable();
+    listed.dedup();
+    let keep = |code: u8| -> Vec<Interval> {
+        reference
+            .iter()
+            .filter(|f| f.eye == code)
+            .map(|f| Interval {
+                start_s: f.start_s,
+                end_s: f.end_s,
+            })
+            .collect()
+    };
+    let holds = || {
+        listed
+            .iter()
+            .map(|&c| {
+                let n = reference.iter().filter(|f| f.eye == c).count();
+                format!("{n} of eye {c} ({})", eye_name(c))
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if listed.contains(&eye) {
+        return Ok(keep(eye));
+    }
+    match (eye, listed.as_slice()) {
+        (_, []) => Ok(Vec::new()),
+        (0 | 1, [2]) => Ok(keep(2)),
+        (2, [only]) => Ok(keep(*only)),
+        (2, _) => Err(format!(
+            "the detection ran on the mean of both eyes (eye 2) but the reference lists each eye \
+             apart ({}): score one eye with --eyes left or right, or each with --eyes both",
+            holds()
+        )),
+        (_, _) => Err(format!(
+            "the reference lists no fixation of the {} eye (eye {eye}); it holds {}",
+            eye_name(eye),
+            holds()
+        )),
+    }
 }
 
 /// Runs the detector over the recording at `path`; with `reference`, scores the result against
@@ -153,7 +281,10 @@ pub fn run(
             name: "screen",
             reason: "no screen size".into(),
         })?;
-    report.fixations = detect(options, &samples)
+    let detection = detect(options, &samples, origin_s);
+    report.backwards = detection.backwards;
+    report.fixations = detection
+        .events
         .iter()
         .map(|e| ListedFixation::from_event(e, screen, origin_s))
         .collect();
@@ -165,20 +296,54 @@ pub fn run(
                 name: "--compare",
                 reason: format!("{}: {e}", reference.display()),
             })?;
-        let as_intervals = |list: &[ListedFixation]| -> Vec<Interval> {
-            list.iter()
-                .map(|f| Interval {
-                    start_s: f.start_s,
-                    end_s: f.end_s,
-                })
-                .collect()
-        };
-        report.agreement = Some(compare(
-            &as_intervals(&report.fixations),
-            &as_intervals(&listed),
-        ));
+        let (agreement, per_eye) =
+            score(&report.fixations, &detection.eyes, &listed).map_err(|reason| {
+                ClientError::InvalidOption {
+                    name: "--compare",
+                    reason: format!("{}: {reason}", reference.display()),
+                }
+            })?;
+        report.agreement = Some(agreement);
+        report.per_eye = per_eye;
     }
     Ok(report)
+}
+
+/// Scores `detected` (found on the eyes `eyes`, list codes) against `reference` eye by eye (see
+/// [`reference_for`]): the pooled agreement, and each eye's own when there are several.
+///
+/// # Errors
+/// A reference that cannot be matched to the detected eyes, saying why.
+pub fn score(
+    detected: &[ListedFixation],
+    eyes: &[u8],
+    reference: &[ListedFixation],
+) -> Result<(Agreement, Vec<(u8, Agreement)>), String> {
+    let mut groups = Vec::new();
+    for &eye in eyes {
+        let found: Vec<Interval> = detected
+            .iter()
+            .filter(|f| f.eye == eye)
+            .map(|f| Interval {
+                start_s: f.start_s,
+                end_s: f.end_s,
+            })
+            .collect();
+        groups.push((eye, found, reference_for(eye, reference)?));
+    }
+    let per_eye = if groups.len() > 1 {
+        groups
+            .iter()
+            .map(|(eye, d, r)| (*eye, compare_groups(&[(d, r)])))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let pooled: Vec<(&[Interval], &[Interval])> = groups
+        .iter()
+        .map(|(_, d, r)| (d.as_slice(), r.as_slice()))
+        .collect();
+    Ok((compare_groups(&pooled), per_eye))
 }
 
 /// Writes the fixations as CSV ([`HEADER`]), then the agreement, if any, as `#` comment lines so
@@ -190,6 +355,19 @@ pub fn write_report<W: Write>(mut out: W, report: &FixationReport) -> std::io::R
     writeln!(out, "{HEADER}")?;
     for f in &report.fixations {
         writeln!(out, "{}", f.to_line())?;
+    }
+    for (eye, a) in &report.per_eye {
+        writeln!(
+            out,
+            "# {} eye: detected {}, reference {}, matched {}, precision {:.3}, recall {:.3}, F1 {:.3}",
+            eye_name(*eye),
+            a.detected,
+            a.reference,
+            a.matched,
+            a.precision,
+            a.recall,
+            a.f1
+        )?;
     }
     if let Some(a) = &report.agreement {
         let ms = |s: f64| s * 1000.0;
@@ -219,4 +397,62 @@ pub fn write_report<W: Write>(mut out: W, report: &FixationReport) -> std::io::R
         )?;
     }
     out.flush()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fix(eye: u8, start_s: f64, end_s: f64) -> ListedFixation {
+        ListedFixation {
+            eye,
+            start_s,
+            end_s,
+            x_px: 0.0,
+            y_px: 0.0,
+        }
+    }
+
+    #[test]
+    fn each_eye_is_scored_against_its_own_reference_only() {
+        // The left eye's detection lies on the right eye's reference fixation and vice versa.
+        let detected = [fix(0, 0.0, 1.0), fix(1, 2.0, 3.0)];
+        let reference = [fix(0, 2.0, 3.0), fix(1, 0.0, 1.0)];
+        let (pooled, per_eye) = score(&detected, &[0, 1], &reference).expect("scores");
+        assert_eq!(
+            (pooled.detected, pooled.reference, pooled.matched),
+            (2, 2, 0)
+        );
+        assert_eq!(per_eye.len(), 2);
+        assert!(
+            per_eye
+                .iter()
+                .all(|(_, a)| a.matched == 0 && a.reference == 1)
+        );
+        // One eye: scored against that eye's reference fixations only.
+        let (left, per_eye) = score(&detected[..1], &[0], &reference).expect("scores");
+        assert_eq!((left.detected, left.reference, left.matched), (1, 1, 0));
+        assert!(per_eye.is_empty());
+        let matching = [fix(0, 0.1, 0.9), fix(1, 5.0, 6.0), fix(1, 7.0, 8.0)];
+        let (left, _) = score(&detected[..1], &[0], &matching).expect("scores");
+        assert_eq!((left.reference, left.matched, left.f1), (1, 1, 1.0));
+    }
+
+    #[test]
+    fn references_without_eyes_serve_any_eye_and_mismatches_are_refused() {
+        let detected = [fix(0, 0.0, 1.0)];
+        let unknown = [fix(2, 0.0, 1.0)];
+        let (a, _) = score(&detected, &[0], &unknown).expect("an eye-less reference");
+        assert_eq!(a.matched, 1);
+        let right_only = [fix(1, 0.0, 1.0)];
+        let err = score(&detected, &[0], &right_only).expect_err("no left-eye reference");
+        assert!(err.contains("no fixation of the left eye"), "{err}");
+        // The mean of both eyes against a reference of one eye is scored; against both, refused.
+        let mean = [fix(2, 0.0, 1.0)];
+        let (a, _) = score(&mean, &[2], &right_only).expect("one-eyed reference");
+        assert_eq!(a.matched, 1);
+        let both = [fix(0, 0.0, 1.0), fix(1, 0.0, 1.0)];
+        let err = score(&mean, &[2], &both).expect_err("eyes listed apart");
+        assert!(err.contains("--eyes left or right"), "{err}");
+    }
 }

@@ -7,11 +7,19 @@
 //! lowest one-second rate seen), the step-time p99 (sum of the frame's phases, read by a watcher
 //! that keeps up), samples sent against accepted / rejected / rate-limited by the server's own
 //! summaries, and the server's resident memory over time (Linux `/proc`, on loopback).
+//!
+//! With [`LoadOptions::chaos`] (`foveal load --chaos`), the same load runs while the server is
+//! treated as a hostile network would: clients killed mid-call, connections left idle by the
+//! hundred (silent, half an HTTP/1.1 head, an HTTP/2 preface and nothing more), request bodies
+//! stalled mid-message, and Configure called every second. A fresh client's call (connect and
+//! GetStatus) is timed throughout: what a new user would wait at the worst moment.
 
 use std::fmt;
 use std::time::{Duration, Instant};
 
 use foveal_proto::pb;
+use tokio::io::AsyncWriteExt;
+use tokio::net::TcpStream;
 use tokio::sync::mpsc;
 use tokio_stream::wrappers::ReceiverStream;
 
@@ -42,6 +50,93 @@ pub struct LoadOptions {
     pub server_pid: Option<u32>,
     /// How often RSS and the frame rate are sampled.
     pub sample_every: Duration,
+    /// The disorder to add, if any (a chaos run).
+    pub chaos: Option<ChaosOptions>,
+}
+
+/// The disorder of a chaos run, added to the load.
+#[derive(Debug, Clone)]
+pub struct ChaosOptions {
+    /// Token and CA for Configure (role `admin`).
+    pub admin: ConnectOptions,
+    /// A client (gaze stream or watcher, in turn) is started and killed mid-call this often.
+    pub kill_every: Duration,
+    /// Connections kept open doing nothing useful (a third silent, a third half an HTTP/1.1
+    /// head, a third an HTTP/2 preface only), renewed every [`Self::renew_every`].
+    pub idle_connections: usize,
+    /// Requests whose body stops mid-message, renewed with the idle connections.
+    pub stalled_bodies: usize,
+    /// How often the idle connections and stalled bodies are dropped and opened anew.
+    pub renew_every: Duration,
+    /// How often Configure is called.
+    pub configure_every: Duration,
+    /// How often a fresh client connects and calls GetStatus, timed.
+    pub probe_every: Duration,
+    /// How long a fresh client's call may take before it counts as failed.
+    pub probe_timeout: Duration,
+}
+
+impl Default for ChaosOptions {
+    fn default() -> Self {
+        Self {
+            admin: ConnectOptions::default(),
+            kill_every: Duration::from_secs(1),
+            idle_connections: 200,
+            stalled_bodies: 16,
+            renew_every: Duration::from_secs(10),
+            configure_every: Duration::from_secs(1),
+            probe_every: Duration::from_millis(250),
+            probe_timeout: Duration::from_secs(5),
+        }
+    }
+}
+
+/// What the disorder did and how a fresh client fared through it.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ChaosReport {
+    /// Clients killed mid-call.
+    pub killed: u64,
+    /// Idle connections opened (all rounds).
+    pub idle_opened: u64,
+    /// Idle connections the server did not accept (connect failed).
+    pub idle_refused: u64,
+    /// Requests left with a body stalled mid-message.
+    pub stalled_bodies: u64,
+    /// Configure calls answered OK, and failed.
+    pub configures: (u64, u64),
+    /// Fresh clients' calls made, and failed (or over the timeout).
+    pub probes: (u64, u64),
+    /// Their latency (connect and GetStatus), milliseconds: median, 99th percentile, worst.
+    pub probe_ms: (f64, f64, f64),
+    /// When the worst one started, seconds into the run.
+    pub worst_at_s: f64,
+}
+
+impl fmt::Display for ChaosReport {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "chaos: {} clients killed mid-call, {} idle connections opened ({} refused), {} \
+             bodies stalled mid-message, Configure {} ok / {} failed",
+            self.killed,
+            self.idle_opened,
+            self.idle_refused,
+            self.stalled_bodies,
+            self.configures.0,
+            self.configures.1
+        )?;
+        write!(
+            f,
+            "fresh client (connect + GetStatus): {} calls, {} failed; p50 {:.1} ms, p99 {:.1} ms, \
+             worst {:.1} ms at {:.0} s",
+            self.probes.0,
+            self.probes.1,
+            self.probe_ms.0,
+            self.probe_ms.1,
+            self.probe_ms.2,
+            self.worst_at_s
+        )
+    }
 }
 
 impl Default for LoadOptions {
@@ -58,6 +153,7 @@ impl Default for LoadOptions {
             duration: Duration::from_secs(60),
             server_pid: None,
             sample_every: Duration::from_secs(1),
+            chaos: None,
         }
     }
 }
@@ -100,6 +196,8 @@ pub struct LoadReport {
     pub stream_errors: u64,
     /// The server over time.
     pub samples: Vec<LoadSample>,
+    /// What a chaos run did, if it was one.
+    pub chaos: Option<ChaosReport>,
 }
 
 impl LoadReport {
@@ -126,13 +224,20 @@ impl fmt::Display for LoadReport {
         )?;
         writeln!(
             f,
-            "samples sent {} accepted {} rejected {} rate-limited {}; stream errors {}",
+            "samples sent {} accepted {} rejected {} rate-limited {} (unaccounted {}); stream \
+             errors {}",
             self.samples_sent,
             self.samples_accepted,
             self.samples_rejected,
             self.samples_rate_limited,
+            self.samples_sent
+                - (self.samples_accepted + self.samples_rejected + self.samples_rate_limited)
+                    .min(self.samples_sent),
             self.stream_errors
         )?;
+        if let Some(chaos) = &self.chaos {
+            writeln!(f, "{chaos}")?;
+        }
         writeln!(
             f,
             "frames received {} (dropped for slowness {}) by the reading watchers",
@@ -355,6 +460,203 @@ async fn watcher(
     Ok((received, dropped, steps))
 }
 
+/// A gaze stream or a watcher (in turn) on its own connection, killed mid-call: the task holding
+/// its connection is aborted, so the server sees the connection vanish with the call open.
+async fn doomed_client(addr: String, gaze: ConnectOptions, viewer: ConnectOptions, index: u64) {
+    let work = async move {
+        if index.is_multiple_of(2) {
+            let mut client = connect_with(&addr, &gaze).await.ok()?;
+            let (tx, rx) = mpsc::channel::<pb::GazeSample>(64);
+            let call =
+                tokio::spawn(async move { client.stream_gaze(ReceiverStream::new(rx)).await });
+            for i in 0u32.. {
+                let sample = pb::GazeSample {
+                    tracker_time_s: f64::from(i) * 1e-3,
+                    x: 0.5,
+                    y: 0.5,
+                    validity: 1.0,
+                    eye: pb::Eye::Binocular as i32,
+                    fixation: None,
+                };
+                if tx.send(sample).await.is_err() {
+                    break;
+                }
+                tokio::time::sleep(Duration::from_millis(1)).await;
+            }
+            call.abort();
+        } else {
+            let mut client = connect_with(&addr, &viewer).await.ok()?;
+            let mut frames = client
+                .watch_frames(pb::WatchFramesRequest {
+                    every_k: 1,
+                    ..Default::default()
+                })
+                .await
+                .ok()?
+                .into_inner();
+            while let Ok(Some(_)) = frames.message().await {}
+        }
+        Some(())
+    };
+    // Killed after a while mid-call: dropping the future drops its connection.
+    let _ = tokio::time::timeout(Duration::from_millis(700), work).await;
+}
+
+/// `host:port` of a server address, for raw connections.
+fn authority(addr: &str) -> String {
+    let url = crate::normalise_addr(addr);
+    let rest = url.split_once("://").map_or(url.as_str(), |(_, r)| r);
+    rest.trim_end_matches('/').to_owned()
+}
+
+/// One round of connections that do nothing useful: silent, half an HTTP/1.1 head, an HTTP/2
+/// preface only, and grpc-web PushGaze requests whose body stops after a few bytes.
+async fn idle_round(
+    authority: &str,
+    idle: usize,
+    stalled: usize,
+    report: &mut ChaosReport,
+) -> Vec<TcpStream> {
+    let mut held = Vec::with_capacity(idle + stalled);
+    for i in 0..idle + stalled {
+        let Ok(mut stream) = TcpStream::connect(authority).await else {
+            report.idle_refused += 1;
+            continue;
+        };
+        let bytes: Vec<u8> = if i >= idle {
+            report.stalled_bodies += 1;
+            // A grpc-web message announced as 995 bytes of which 10 arrive.
+            let mut head = format!(
+                "POST /foveal.v1.Foveal/PushGaze HTTP/1.1\r\nHost: {authority}\r\n\
+                 Content-Type: application/grpc-web+proto\r\nX-Grpc-Web: 1\r\n\
+                 Content-Length: 1000\r\n\r\n"
+            )
+            .into_bytes();
+            head.extend_from_slice(&[0, 0, 0, 0x03, 0xe3]);
+            head.extend_from_slice(&[0x0a; 10]);
+            head
+        } else {
+            report.idle_opened += 1;
+            match i % 3 {
+                0 => Vec::new(),
+                1 => format!("GET / HTTP/1.1\r\nHost: {authority}\r\n").into_bytes(),
+                _ => b"PRI * HTTP/2.0\r\n\r\nSM\r\n\r\n".to_vec(),
+            }
+        };
+        if !bytes.is_empty() {
+            let _ = stream.write_all(&bytes).await;
+        }
+        held.push(stream);
+    }
+    held
+}
+
+/// A fresh client: connect and GetStatus, timed; `None` when it failed or took too long.
+async fn probe(addr: &str, options: &ConnectOptions, timeout: Duration) -> (f64, bool) {
+    let started = Instant::now();
+    let call = async {
+        let mut client = connect_with(addr, options).await.ok()?;
+        client.get_status(pb::GetStatusRequest {}).await.ok()
+    };
+    let ok = matches!(tokio::time::timeout(timeout, call).await, Ok(Some(_)));
+    (started.elapsed().as_secs_f64() * 1e3, ok)
+}
+
+/// Runs the disorder until `until` and reports it.
+async fn chaos(
+    options: LoadOptions,
+    chaos: ChaosOptions,
+    start: Instant,
+    until: Instant,
+) -> ChaosReport {
+    let mut report = ChaosReport::default();
+    let deadline = tokio::time::Instant::from_std(until);
+    let authority = authority(&options.addr);
+    let mut kill = tokio::time::interval(chaos.kill_every);
+    let mut renew = tokio::time::interval(chaos.renew_every);
+    let mut configure = tokio::time::interval(chaos.configure_every);
+    let mut probe_tick = tokio::time::interval(chaos.probe_every);
+    for tick in [&mut kill, &mut renew, &mut configure, &mut probe_tick] {
+        tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Skip);
+    }
+    let mut admin = connect_with(&options.addr, &chaos.admin).await.ok();
+    let mut held: Vec<TcpStream> = Vec::new();
+    let mut doomed = tokio::task::JoinSet::new();
+    let mut probes = tokio::task::JoinSet::new();
+    let mut latencies: Vec<(f64, f64)> = Vec::new();
+    let mut killed = 0u64;
+    let mut threshold = false;
+    loop {
+        tokio::select! {
+            () = tokio::time::sleep_until(deadline) => break,
+            _ = kill.tick() => {
+                doomed.spawn(doomed_client(
+                    options.addr.clone(),
+                    options.gaze.clone(),
+                    options.viewer.clone(),
+                    killed,
+                ));
+                killed += 1;
+            }
+            _ = renew.tick() => {
+                held.clear();
+                held = idle_round(&authority, chaos.idle_connections, chaos.stalled_bodies, &mut report).await;
+            }
+            _ = configure.tick() => {
+                threshold = !threshold;
+                let request = pb::ConfigureRequest {
+                    config: Some(pb::SceneConfig {
+                        eccentricity_threshold_deg: if threshold { 5.5 } else { 5.0 },
+                        ..Default::default()
+                    }),
+                    update_mask: None,
+                };
+                let ok = match admin.as_mut() {
+                    Some(client) => client.configure(request).await.is_ok(),
+                    None => false,
+                };
+                if ok {
+                    report.configures.0 += 1;
+                } else {
+                    report.configures.1 += 1;
+                    admin = connect_with(&options.addr, &chaos.admin).await.ok();
+                }
+            }
+            _ = probe_tick.tick() => {
+                let (addr, viewer, timeout) = (options.addr.clone(), options.viewer.clone(), chaos.probe_timeout);
+                let at = start.elapsed().as_secs_f64();
+                probes.spawn(async move { (at, probe(&addr, &viewer, timeout).await) });
+            }
+            Some(done) = probes.join_next() => {
+                if let Ok((at, (ms, ok))) = done {
+                    report.probes.0 += 1;
+                    report.probes.1 += u64::from(!ok);
+                    latencies.push((ms, at));
+                }
+            }
+            Some(_) = doomed.join_next() => {}
+        }
+    }
+    drop(held);
+    doomed.shutdown().await;
+    while let Some(done) = probes.join_next().await {
+        if let Ok((at, (ms, ok))) = done {
+            report.probes.0 += 1;
+            report.probes.1 += u64::from(!ok);
+            latencies.push((ms, at));
+        }
+    }
+    report.killed = killed;
+    let mut ms: Vec<f64> = latencies.iter().map(|(ms, _)| *ms).collect();
+    ms.sort_by(f64::total_cmp);
+    let p = |q| crate::watch::percentile(&ms, q).unwrap_or(0.0);
+    if let Some(&(worst, at)) = latencies.iter().max_by(|a, b| a.0.total_cmp(&b.0)) {
+        report.probe_ms = (p(0.5), p(0.99), worst);
+        report.worst_at_s = at;
+    }
+    report
+}
+
 /// Run the load and measure.
 ///
 /// # Errors
@@ -416,6 +718,11 @@ pub async fn run(options: &LoadOptions) -> Result<LoadReport, ClientError> {
             ))
         })
         .collect();
+
+    let chaos_task = options
+        .chaos
+        .clone()
+        .map(|c| tokio::spawn(chaos(options.clone(), c, start, until)));
 
     let mut samples = Vec::new();
     let mut next = start + options.sample_every;
@@ -481,6 +788,12 @@ pub async fn run(options: &LoadOptions) -> Result<LoadReport, ClientError> {
     steps.sort_by(f64::total_cmp);
     report.step_p99_ms = crate::watch::percentile(&steps, 0.99).unwrap_or(0.0);
     report.samples = samples;
+    if let Some(task) = chaos_task {
+        match task.await {
+            Ok(chaos) => report.chaos = Some(chaos),
+            Err(e) => tracing::warn!(error = %e, "the chaos task failed"),
+        }
+    }
     Ok(report)
 }
 
@@ -495,5 +808,7 @@ mod tests {
             assert!(rss > 0.1, "{rss}");
         }
         assert_eq!(port_of("http://127.0.0.1:50051"), Some(50051));
+        assert_eq!(authority("127.0.0.1:50051"), "127.0.0.1:50051");
+        assert_eq!(authority("https://localhost:7000/"), "localhost:7000");
     }
 }

@@ -6,7 +6,13 @@
 //! the outlet closes the feed. Every time stamp has the latest clock correction added, so it is
 //! on this machine's LSL clock (the monotonic clock, as liblsl's `local_clock()`), whichever
 //! machine the outlet runs on; the probes are repeated every [`TIME_PROBE_INTERVAL`] in the
-//! background so that drift is followed.
+//! background so that drift is followed. Chunks stamped once are timed per sample by
+//! [`SampleClock`].
+//!
+//! An outlet that goes away (its program closed or crashed, its feed reset) is waited for, as a
+//! liblsl inlet with recovery does: the stream is looked for again by name, type and source id,
+//! and the bridge says when it is back. With [`LslOptions::reconnect`] off, the outlet going away
+//! ends the source with an error instead, so that a script sees a failure rather than success.
 
 use std::io;
 use std::net::{IpAddr, SocketAddr};
@@ -18,7 +24,7 @@ use tokio::sync::{mpsc, watch};
 use tracing::{debug, info, warn};
 
 use crate::gaze::lsl::{
-    self, ChannelMap, FeedResponse, LslError, StreamInfo, TAG_DEDUCED_TIMESTAMP,
+    self, ChannelMap, FeedResponse, LslError, SampleClock, StreamInfo, TAG_DEDUCED_TIMESTAMP,
     TAG_TRANSMITTED_TIMESTAMP, TEST_PATTERN_TIMESTAMP, TimeProbe,
 };
 use crate::source::{CHANNEL_CAPACITY, SourceError, SourceItem};
@@ -48,6 +54,8 @@ pub struct LslOptions {
     pub resolve_addresses: Vec<IpAddr>,
     /// Add the outlet's clock correction to its time stamps.
     pub time_correction: bool,
+    /// When the outlet goes away, wait for it to come back (true) or end with an error (false).
+    pub reconnect: bool,
 }
 
 impl Default for LslOptions {
@@ -62,6 +70,7 @@ impl Default for LslOptions {
                 .filter_map(|a| a.parse().ok())
                 .collect(),
             time_correction: true,
+            reconnect: true,
         }
     }
 }
@@ -85,8 +94,9 @@ pub fn local_clock() -> f64 {
 }
 
 /// An LSL outlet as a source. A stream that cannot be found, reached or understood ends the
-/// source with one [`SourceError::Io`] that says which; the outlet closing its feed ends it
-/// cleanly. NaN or infinite gaze channels are forwarded as missing samples.
+/// source with one [`SourceError::Io`] that says which. The outlet closing its feed is waited
+/// out until it comes back ([`LslOptions::reconnect`]), or ends the source with an error. NaN or
+/// infinite gaze channels are forwarded as missing samples.
 ///
 /// # Panics
 /// When called outside a tokio runtime.
@@ -119,10 +129,15 @@ fn query_id() -> String {
 /// No outlet answered in time, a value cannot be put in a query, or the socket failed.
 pub async fn resolve(options: &LslOptions) -> io::Result<(StreamInfo, IpAddr)> {
     let query = lsl::query(&options.type_, options.name.as_deref()).map_err(invalid)?;
+    resolve_query(options, &query).await
+}
+
+/// [`resolve`] with a query of the caller's.
+async fn resolve_query(options: &LslOptions, query: &str) -> io::Result<(StreamInfo, IpAddr)> {
     let socket = UdpSocket::bind("0.0.0.0:0").await?;
     socket.set_broadcast(true)?;
     let id = query_id();
-    let request = lsl::shortinfo_request(&query, socket.local_addr()?.port(), &id);
+    let request = lsl::shortinfo_request(query, socket.local_addr()?.port(), &id);
     let deadline = tokio::time::Instant::now() + options.resolve_timeout;
     let mut buf = vec![0u8; 65_536];
     loop {
@@ -216,25 +231,25 @@ async fn follow_clock(service: SocketAddr, tx: watch::Sender<f64>) {
     }
 }
 
-/// Reads one sample: its time stamp (before correction; deduced ones from `previous`) and
+/// Reads one sample: its time (on the outlet's clock, before correction, from `clock`) and
 /// channel values.
 async fn read_sample<R: AsyncRead + Unpin>(
     reader: &mut R,
     info: &StreamInfo,
     response: FeedResponse,
-    previous: f64,
+    clock: &mut SampleClock,
     values: &mut Vec<u8>,
 ) -> io::Result<(f64, Vec<f64>)> {
     let timestamp = match reader.read_u8().await? {
-        TAG_DEDUCED_TIMESTAMP => lsl::deduced_timestamp(previous, info.nominal_srate),
+        TAG_DEDUCED_TIMESTAMP => clock.deduced(),
         TAG_TRANSMITTED_TIMESTAMP => {
             let mut raw = [0u8; 8];
             reader.read_exact(&mut raw).await?;
-            if response.big_endian {
+            clock.transmitted(if response.big_endian {
                 f64::from_be_bytes(raw)
             } else {
                 f64::from_le_bytes(raw)
-            }
+            })
         }
         other => return Err(invalid(LslError::Tag(other))),
     };
@@ -246,17 +261,86 @@ async fn read_sample<R: AsyncRead + Unpin>(
     ))
 }
 
+/// How one connection to an outlet ended, other than by an error.
+enum SessionEnd {
+    /// The outlet closed its feed.
+    Closed,
+    /// Nobody reads the source any more.
+    ReceiverGone,
+}
+
+/// Whether an error of a session means the outlet went away (and may come back), rather than a
+/// stream this bridge cannot read.
+fn outlet_gone(err: &io::Error) -> bool {
+    use io::ErrorKind::{
+        BrokenPipe, ConnectionAborted, ConnectionRefused, ConnectionReset, TimedOut, UnexpectedEof,
+    };
+    matches!(
+        err.kind(),
+        UnexpectedEof
+            | ConnectionReset
+            | ConnectionAborted
+            | BrokenPipe
+            | ConnectionRefused
+            | TimedOut
+    )
+}
+
 async fn run(options: &LslOptions, tx: &mpsc::Sender<SourceItem>) -> io::Result<()> {
-    let (info, addr) = resolve(options).await?;
-    options
-        .channels
-        .check(info.channel_count)
-        .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e.to_string()))?;
-    info!(
-        name = %info.name, source_id = %info.source_id, %addr, port = info.v4data_port,
-        channels = info.channel_count, format = %info.channel_format, srate = info.nominal_srate,
-        "found the LSL stream"
-    );
+    let (mut info, mut addr) = resolve(options).await?;
+    // When the outlet went away, if it did: the next session says when it is back.
+    let mut lost: Option<tokio::time::Instant> = None;
+    loop {
+        options
+            .channels
+            .check(info.channel_count)
+            .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e.to_string()))?;
+        info!(
+            name = %info.name, source_id = %info.source_id, %addr, port = info.v4data_port,
+            channels = info.channel_count, format = %info.channel_format, srate = info.nominal_srate,
+            "found the LSL stream"
+        );
+        let why = match session(options, &info, addr, tx, lost.take()).await {
+            Ok(SessionEnd::ReceiverGone) => return Ok(()),
+            Ok(SessionEnd::Closed) => "the outlet closed the stream".to_owned(),
+            Err(err) if outlet_gone(&err) => format!("the outlet went away ({err})"),
+            Err(err) => return Err(err),
+        };
+        let data = SocketAddr::new(addr, info.v4data_port);
+        if !options.reconnect {
+            return Err(io::Error::new(
+                io::ErrorKind::ConnectionAborted,
+                format!("{why} at {data}; not waiting for it to come back (--no-reconnect)"),
+            ));
+        }
+        let query =
+            lsl::recovery_query(&info, &options.type_, options.name.as_deref()).map_err(invalid)?;
+        warn!(%data, "{why}; waiting for it to come back ({query})");
+        let since = lost.unwrap_or_else(tokio::time::Instant::now);
+        lost = Some(since);
+        (info, addr) = loop {
+            let found = tokio::select! {
+                () = tx.closed() => return Ok(()),
+                found = resolve_query(options, &query) => found,
+            };
+            match found {
+                Ok(found) => break found,
+                Err(err) if err.kind() == io::ErrorKind::NotFound => {}
+                Err(err) => return Err(err),
+            }
+        };
+    }
+}
+
+/// One connection to an outlet: clock probes, the feed handshake, then samples until the outlet
+/// closes the feed or nobody reads the source.
+async fn session(
+    options: &LslOptions,
+    info: &StreamInfo,
+    addr: IpAddr,
+    tx: &mpsc::Sender<SourceItem>,
+    lost: Option<tokio::time::Instant>,
+) -> io::Result<SessionEnd> {
     let (correction_tx, correction) = watch::channel(0.0);
     if options.time_correction {
         let service = SocketAddr::new(addr, info.v4service_port);
@@ -283,13 +367,15 @@ async fn run(options: &LslOptions, tx: &mpsc::Sender<SourceItem>) -> io::Result<
     let mut reader = BufReader::new(stream);
     reader
         .get_mut()
-        .write_all(lsl::feed_request(&info).as_bytes())
+        .write_all(lsl::feed_request(info).as_bytes())
         .await?;
-    let response = read_feed_response(&mut reader, &info).await?;
+    let response = read_feed_response(&mut reader, info).await?;
 
     let mut values = Vec::new();
     for (index, offset) in [4, 2].into_iter().enumerate() {
-        let (t, got) = read_sample(&mut reader, &info, response, 0.0, &mut values).await?;
+        let mut pattern_clock = SampleClock::new(0.0);
+        let (t, got) =
+            read_sample(&mut reader, info, response, &mut pattern_clock, &mut values).await?;
         let expected = lsl::test_pattern(info.channel_format, info.channel_count, offset);
         if t != TEST_PATTERN_TIMESTAMP || got != expected {
             return Err(invalid(LslError::TestPattern {
@@ -299,26 +385,40 @@ async fn run(options: &LslOptions, tx: &mpsc::Sender<SourceItem>) -> io::Result<
             }));
         }
     }
-    info!(%data, "receiving the LSL stream");
+    match lost {
+        Some(since) => info!(
+            %data,
+            after_s = format!("{:.1}", since.elapsed().as_secs_f64()),
+            "the LSL outlet is back: reconnected, receiving the stream again"
+        ),
+        None => info!(%data, "receiving the LSL stream"),
+    }
 
-    let mut previous = 0.0;
+    let mut clock = SampleClock::new(info.nominal_srate);
+    let mut shift_said = false;
     loop {
         let (t, values) = tokio::select! {
             biased;
-            () = tx.closed() => return Ok(()),
-            read = read_sample(&mut reader, &info, response, previous, &mut values) => match read {
+            () = tx.closed() => return Ok(SessionEnd::ReceiverGone),
+            read = read_sample(&mut reader, info, response, &mut clock, &mut values) => match read {
                 Ok(sample) => sample,
                 Err(err) if err.kind() == io::ErrorKind::UnexpectedEof => {
-                    info!(%data, "the outlet closed the stream");
-                    return Ok(());
+                    return Ok(SessionEnd::Closed);
                 }
                 Err(err) => return Err(err),
             },
         };
-        previous = t;
+        if clock.shifted() > 0 && !shift_said {
+            shift_said = true;
+            info!(
+                srate = info.nominal_srate,
+                "a chunk's time stamps overlap the previous chunk's: its samples follow the \
+                 previous one at the nominal rate (and so do later such chunks)"
+            );
+        }
         let sample = options.channels.sample(t + *correction.borrow(), &values);
         if tx.send(Ok(sample)).await.is_err() {
-            return Ok(());
+            return Ok(SessionEnd::ReceiverGone);
         }
     }
 }

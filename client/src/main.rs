@@ -16,14 +16,14 @@ use foveal_client::bridge::{self, BridgeReport, ForwardOptions, StopReason};
 use foveal_client::gaze::lsl::{ChannelMap, Units};
 use foveal_client::gaze::opengaze;
 use foveal_client::gaze::script::{GazeScript, ScriptedGaze};
-use foveal_client::gaze::{Eye, ScreenPx};
+use foveal_client::gaze::{Binocular, Eye, ScreenPx};
 use foveal_client::health;
-use foveal_client::load::{self, LoadOptions};
+use foveal_client::load::{self, ChaosOptions, LoadOptions};
 use foveal_client::lsl::{self, LslOptions};
 use foveal_client::pacer::Pace;
 use foveal_client::pupil::{self, PupilOptions};
 use foveal_client::sender::{GazeSender, Transport};
-use foveal_client::source::{self, GazepointOptions, RecordingFormat, SourceItem};
+use foveal_client::source::{self, GazepointOptions, ReadOptions, RecordingFormat, SourceItem};
 use foveal_client::watch::{self, WatchOptions};
 use tokio::sync::mpsc;
 use tracing::info;
@@ -76,6 +76,27 @@ enum EyesArg {
     Right,
     /// Each eye detected apart.
     Both,
+}
+
+impl EyesArg {
+    fn binocular(self) -> Binocular {
+        match self {
+            Self::Mean => Binocular::Mean,
+            Self::Left => Binocular::Left,
+            Self::Right => Binocular::Right,
+            Self::Both => Binocular::Both,
+        }
+    }
+}
+
+/// The eyes of a binocular recording, for the bridges and replays.
+#[derive(Debug, Args)]
+struct EyesOpt {
+    /// Eyes of a binocular recording to send: their mean, one of them, or both (two samples an
+    /// instant, each tagged with its eye, for a server that combines them itself:
+    /// foveal-server --gaze-eyes). A monocular recording sends its one eye.
+    #[arg(long, value_enum, default_value = "mean")]
+    eyes: EyesArg,
 }
 
 #[derive(Debug, Args)]
@@ -178,12 +199,21 @@ struct LoadArgs {
     /// Watchers ask for poses.
     #[arg(long)]
     poses: bool,
-    /// Seconds to run (T).
-    #[arg(long, default_value_t = 60.0)]
-    seconds: f64,
+    /// Seconds to run (T); default 60, or 600 with --chaos.
+    #[arg(long, visible_alias = "duration")]
+    seconds: Option<f64>,
     /// The server's process id, for its RSS (default: the process listening on the port).
     #[arg(long)]
     server_pid: Option<u32>,
+    /// A chaos run: the same load while clients are killed mid-call (one a second), 200
+    /// connections are left idle and 16 request bodies stalled mid-message (renewed every 10 s),
+    /// and Configure is called every second (needs an admin token on a server with roles); a
+    /// fresh client's connect and GetStatus is timed every 250 ms throughout.
+    #[arg(long)]
+    chaos: bool,
+    /// Token for Configure in a chaos run (default: --token).
+    #[arg(long, env = "FOVEAL_ADMIN_TOKEN", hide_env_values = true)]
+    admin_token: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -290,6 +320,8 @@ enum ScriptCommand {
         speed: SpeedArgs,
         #[command(flatten)]
         screen: ScreenArg,
+        #[command(flatten)]
+        eyes: EyesOpt,
     },
 }
 
@@ -325,17 +357,25 @@ struct BridgeArgs {
 
 #[derive(Debug, Subcommand)]
 enum TrackerCommand {
-    /// CSV gaze lines from a file or, with `-` or nothing, from stdin, forwarded line by line as
-    /// they arrive. Layouts: `t_s,x,y[,validity][,fixation]` (normalised) or `t_s,xpos,ypos`
-    /// (pixels; screen size from --screen or a `# screen WxH px` comment).
+    /// CSV gaze from a file, sent at the file's own pace (its timestamps; --speed to change),
+    /// or with `-` or nothing from stdin, forwarded line by line as the lines arrive. Layouts:
+    /// `t_s,x,y[,validity][,fixation]` (normalised) or `t_s,xpos,ypos` (pixels; screen size
+    /// from --screen or a `# screen WxH px` comment), or either with `_left`/`_right` columns.
     Csv {
         /// The file, or `-` for stdin.
         file: Option<PathBuf>,
-        /// Pace by the timestamps at this speed instead of forwarding lines as they arrive.
-        #[arg(long)]
+        /// Pace by the timestamps at this speed (a file's default is 1, stdin's is to forward
+        /// lines as they arrive).
+        #[arg(long, conflicts_with = "as_fast_as_possible")]
         speed: Option<f64>,
+        /// Send a file without waiting between samples. A server's gaze rate limit then drops
+        /// most of a long recording (the bridge says how much before it starts).
+        #[arg(long)]
+        as_fast_as_possible: bool,
         #[command(flatten)]
         screen: ScreenArg,
+        #[command(flatten)]
+        eyes: EyesOpt,
     },
     /// An EyeLink ASC file, replayed at its own pace.
     Asc {
@@ -345,6 +385,8 @@ enum TrackerCommand {
         speed: SpeedArgs,
         #[command(flatten)]
         screen: ScreenArg,
+        #[command(flatten)]
+        eyes: EyesOpt,
     },
     /// A Gazepoint tracker over the Open Gaze API (TCP).
     Gazepoint {
@@ -415,6 +457,10 @@ enum TrackerCommand {
         /// Keep the outlet's time stamps on its own clock.
         #[arg(long)]
         no_time_correction: bool,
+        /// When the outlet goes away, exit with an error (status 1) instead of waiting for it to
+        /// come back (found again by name, type and source id) and carrying on.
+        #[arg(long)]
+        no_reconnect: bool,
     },
 }
 
@@ -519,7 +565,6 @@ async fn run(cli: Cli) -> Result<ExitCode> {
 }
 
 fn fixations(args: FixationsArgs) -> Result<ExitCode> {
-    use foveal_client::gaze::Binocular;
     use foveal_client::gaze::detect::{DetectorParams, IdtParams, IvtParams};
     use foveal_client::gaze::geometry::ViewingGeometry;
 
@@ -562,16 +607,18 @@ fn fixations(args: FixationsArgs) -> Result<ExitCode> {
         detector,
         geometry,
         screen: args.screen.screen,
-        eyes: match args.eyes {
-            EyesArg::Mean => Binocular::Mean,
-            EyesArg::Left => Binocular::Left,
-            EyesArg::Right => Binocular::Right,
-            EyesArg::Both => Binocular::Both,
-        },
+        eyes: args.eyes.binocular(),
     };
     let report = foveal_client::fixations::run(&args.file, args.compare.as_deref(), &options)?;
     for line in report.bad_lines.iter().take(10) {
         eprintln!("skipped: {line}");
+    }
+    for b in &report.backwards {
+        eprintln!(
+            "dropped: {} sample(s) of eye {} from t = {:.4} s go back before t = {:.4} s, an \
+             earlier sample's time; the detector treats them as missing",
+            b.samples, b.eye, b.first_s, b.latest_s
+        );
     }
     eprintln!(
         "{} samples ({} missing), {} lines skipped, {} fixations",
@@ -599,11 +646,17 @@ async fn gaze(args: GazeArgs) -> Result<ExitCode> {
             file,
             speed,
             screen,
+            eyes,
         } => {
-            let (format, rx) = source::recording(file, None, screen.screen)
-                .with_context(|| format!("open {}", file.display()))?;
+            let pace = speed.pace()?;
+            let options = ReadOptions {
+                format: None,
+                screen: screen.screen,
+                eyes: eyes.eyes.binocular(),
+            };
+            let (format, rx) = open_recording(file, options, pace)?;
             info!(file = %file.display(), ?format, "replaying");
-            (format!("replay:{}", file.display()), rx, speed.pace()?)
+            (format!("replay:{}", file.display()), rx, pace)
         }
         ScriptCommand::Fixed { .. }
         | ScriptCommand::Circle { .. }
@@ -643,27 +696,33 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
         TrackerCommand::Csv {
             file,
             speed,
+            as_fast_as_possible,
             screen,
+            eyes,
         } => {
-            let pace = match speed {
-                Some(speed) => Pace::scaled(*speed).map_err(anyhow::Error::msg)?,
-                None => Pace::AsFastAsPossible,
-            };
-            match file.as_deref() {
+            let speed = speed
+                .map(|s| Pace::scaled(s).map_err(anyhow::Error::msg))
+                .transpose()?;
+            let eyes = eyes.eyes.binocular();
+            match file.as_deref().filter(|p| p.as_os_str() != "-") {
+                // Live lines: sent as they arrive unless a speed is given.
                 None => (
                     "bridge:csv:stdin".to_owned(),
-                    source::stdin_csv(screen.screen),
-                    pace,
-                ),
-                Some(path) if path.as_os_str() == "-" => (
-                    "bridge:csv:stdin".to_owned(),
-                    source::stdin_csv(screen.screen),
-                    pace,
+                    source::stdin_csv(screen.screen, eyes),
+                    speed.unwrap_or(Pace::AsFastAsPossible),
                 ),
                 Some(path) => {
-                    let (_, rx) =
-                        source::recording(path, Some(RecordingFormat::Csv), screen.screen)
-                            .with_context(|| format!("open {}", path.display()))?;
+                    let pace = match (speed, as_fast_as_possible) {
+                        (Some(pace), _) => pace,
+                        (None, true) => Pace::AsFastAsPossible,
+                        (None, false) => Pace::REAL_TIME,
+                    };
+                    let options = ReadOptions {
+                        format: Some(RecordingFormat::Csv),
+                        screen: screen.screen,
+                        eyes,
+                    };
+                    let (_, rx) = open_recording(path, options, pace)?;
                     (format!("bridge:csv:{}", path.display()), rx, pace)
                 }
             }
@@ -672,10 +731,16 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
             file,
             speed,
             screen,
+            eyes,
         } => {
-            let (_, rx) = source::recording(file, Some(RecordingFormat::Asc), screen.screen)
-                .with_context(|| format!("open {}", file.display()))?;
-            (format!("bridge:asc:{}", file.display()), rx, speed.pace()?)
+            let pace = speed.pace()?;
+            let options = ReadOptions {
+                format: Some(RecordingFormat::Asc),
+                screen: screen.screen,
+                eyes: eyes.eyes.binocular(),
+            };
+            let (_, rx) = open_recording(file, options, pace)?;
+            (format!("bridge:asc:{}", file.display()), rx, pace)
         }
         TrackerCommand::Gazepoint {
             host,
@@ -728,6 +793,7 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
             screen,
             resolve_timeout,
             no_time_correction,
+            no_reconnect,
         } => {
             let units = match (units, screen.screen) {
                 (UnitsArg::Normalised, None) => Units::Normalised,
@@ -747,6 +813,7 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
                 },
                 resolve_timeout: seconds("--resolve-timeout", *resolve_timeout)?,
                 time_correction: !no_time_correction,
+                reconnect: !no_reconnect,
                 ..LslOptions::default()
             };
             let label = format!(
@@ -759,7 +826,39 @@ async fn bridge(args: BridgeArgs) -> Result<ExitCode> {
     send(&args.server, &args.send, &name, source, pace).await
 }
 
-/// Connects, forwards `source` and prints the report; exit 1 if the source failed.
+/// Samples a recording is scanned for before it is sent (its rate, its eyes, whether it has
+/// any sample at all): a fraction of a second of reading, however long the file.
+const SCAN_SAMPLES: u64 = 100_000;
+
+/// Opens a recording to send at `pace`, after a look ahead: a file with nothing to send is one
+/// clear error (not thousands of skipped lines and exit 0), an eye asked of a monocular file
+/// and a pace over a server's default gaze rate limit are said before anything is sent.
+fn open_recording(
+    path: &std::path::Path,
+    options: ReadOptions,
+    pace: Pace,
+) -> Result<(RecordingFormat, mpsc::Receiver<SourceItem>)> {
+    let scan = source::scan_recording(path, options, SCAN_SAMPLES)
+        .with_context(|| format!("read {}", path.display()))?;
+    if let Some(why) = scan.nothing_to_send(path) {
+        bail!("{why}");
+    }
+    if options.eyes != Binocular::Mean && !scan.binocular {
+        tracing::warn!(
+            "--eyes {:?} has no effect: {} records one eye only ({:?}), which is sent",
+            options.eyes,
+            path.display(),
+            scan.eye.unwrap_or_default()
+        );
+    }
+    if let Some(warning) = bridge::pace_warning(pace, scan.rate_hz, scan.samples, scan.complete) {
+        tracing::warn!("{warning}");
+    }
+    source::recording(path, options).with_context(|| format!("open {}", path.display()))
+}
+
+/// Connects, forwards `source` and prints the report; exit 1 if the source failed or sent
+/// nothing.
 async fn send(
     server: &ServerArgs,
     send: &SendArgs,
@@ -780,6 +879,10 @@ async fn send(
     };
     let report: BridgeReport = bridge::forward(source, sender, options, ctrl_c()).await?;
     println!("{report}");
+    if let Some(why) = report.nothing_sent() {
+        eprintln!("error: {name}: {why}");
+        return Ok(ExitCode::FAILURE);
+    }
     Ok(match report.stopped {
         StopReason::SourceFailed(_) => ExitCode::FAILURE,
         _ => ExitCode::SUCCESS,
@@ -859,8 +962,11 @@ async fn health(args: HealthArgs) -> Result<ExitCode> {
 }
 
 async fn run_load(args: LoadArgs) -> Result<ExitCode> {
-    if !(args.seconds.is_finite() && args.seconds > 0.0) {
-        bail!("--seconds must be a positive number, not {}", args.seconds);
+    let seconds = args
+        .seconds
+        .unwrap_or(if args.chaos { 600.0 } else { 60.0 });
+    if !(seconds.is_finite() && seconds > 0.0) {
+        bail!("--seconds (--duration) must be a positive number, not {seconds}");
     }
     let base = args.server.options()?;
     let with = |token: &Option<String>| ConnectOptions {
@@ -876,8 +982,12 @@ async fn run_load(args: LoadArgs) -> Result<ExitCode> {
         watchers: args.watchers,
         stalled: args.stalled,
         poses: args.poses,
-        duration: Duration::from_secs_f64(args.seconds),
+        duration: Duration::from_secs_f64(seconds),
         server_pid: args.server_pid,
+        chaos: args.chaos.then(|| ChaosOptions {
+            admin: with(&args.admin_token),
+            ..ChaosOptions::default()
+        }),
         ..LoadOptions::default()
     };
     info!(
@@ -885,7 +995,8 @@ async fn run_load(args: LoadArgs) -> Result<ExitCode> {
         rate_hz = options.rate_hz,
         watchers = options.watchers,
         stalled = options.stalled,
-        seconds = args.seconds,
+        seconds,
+        chaos = args.chaos,
         "loading"
     );
     let report = load::run(&options).await?;

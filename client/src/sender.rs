@@ -9,6 +9,11 @@
 //!
 //! Both give one [`SendSummary`]; for batches the server's per-batch rejection indices are
 //! turned into indices over everything this sender sent, so the two transports read the same.
+//!
+//! The server answers with a total of rejections and the first few of them only. So that a
+//! summary says why *every* rejected sample was refused, the sender checks each sample it sends
+//! with the server's own rules (foveal-gaze's [`Validator`], per stream or per batch as the
+//! server applies it) and counts the rejections by reason.
 
 use std::fmt;
 use std::time::Duration;
@@ -20,6 +25,7 @@ use tokio::time::Instant;
 use tokio_stream::wrappers::ReceiverStream;
 
 use crate::ClientError;
+use crate::gaze::validate::{RejectKind, Validator};
 use crate::gaze::{Eye, GazeSample};
 
 /// Which rpc carries the samples.
@@ -60,6 +66,10 @@ pub struct SendSummary {
     pub rejections: Vec<Rejection>,
     /// Tracker time of the last accepted sample, seconds; `None` if none was accepted.
     pub last_accepted_time_s: Option<f64>,
+    /// Rejections by reason ([`RejectKind::ALL`] order), as this sender counted them by checking
+    /// every sample it sent with the server's rules. Equal to the server's counts unless the
+    /// server dropped samples by its rate limit (those it never checks).
+    pub rejected_by_reason: [u64; RejectKind::ALL.len()],
 }
 
 impl SendSummary {
@@ -97,6 +107,25 @@ impl fmt::Display for SendSummary {
             "sent {}, accepted {}, rejected {}",
             self.sent, self.accepted, self.rejected
         )?;
+        let reasons: Vec<String> = RejectKind::ALL
+            .iter()
+            .zip(self.rejected_by_reason)
+            .filter(|(_, n)| *n > 0)
+            .map(|(kind, n)| format!("{} {n}", kind.name()))
+            .collect();
+        if !reasons.is_empty() {
+            write!(f, " ({}", reasons.join(", "))?;
+            let counted: u64 = self.rejected_by_reason.iter().sum();
+            if counted != self.rejected {
+                write!(
+                    f,
+                    "; counted by this client over all {} samples it sent, the server checked \
+                     only those within its rate limit",
+                    self.sent
+                )?;
+            }
+            f.write_str(")")?;
+        }
         if self.rate_limited > 0 {
             write!(
                 f,
@@ -145,6 +174,9 @@ pub struct GazeSender {
     summary: SendSummary,
     /// Samples already answered for (pushed batches).
     answered: u64,
+    /// The server's rules, applied here to count rejections by reason: one for the stream, a
+    /// new one for each batch (the server checks each batch on its own).
+    check: Validator,
 }
 
 impl GazeSender {
@@ -198,6 +230,7 @@ impl GazeSender {
             inner,
             summary: SendSummary::default(),
             answered: 0,
+            check: Validator::new(),
         })
     }
 
@@ -213,6 +246,9 @@ impl GazeSender {
     /// [`ClientError::Rpc`] when the stream broke or a push failed.
     pub async fn send(&mut self, sample: GazeSample) -> Result<(), ClientError> {
         let message = to_pb(&sample);
+        if let Err(rejection) = self.check.check(&sample) {
+            self.summary.rejected_by_reason[rejection.kind.index()] += 1;
+        }
         match &mut self.inner {
             Inner::Stream { tx, .. } => {
                 let closed = match tx {
@@ -259,6 +295,7 @@ impl GazeSender {
         if buf.is_empty() {
             return Ok(());
         }
+        self.check = Validator::new();
         let samples = std::mem::replace(buf, Vec::with_capacity(*batch));
         let count = samples.len() as u64;
         let request = pb::PushGazeRequest {
@@ -385,7 +422,13 @@ mod tests {
         summary.absorb(20, 0, 500, many, 0.0);
         assert_eq!(summary.rejections.len(), SendSummary::MAX_REJECTIONS);
         assert_eq!(summary.rejected, 503);
+        summary.rejected_by_reason[RejectKind::Missing.index()] = 500;
+        summary.rejected_by_reason[RejectKind::CoordNotFinite.index()] = 3;
         let text = summary.to_string();
+        assert!(
+            text.contains("rejected 503 (missing 500, coord_not_finite 3), last accepted"),
+            "{text}"
+        );
         assert!(text.contains("rejected #10: x: not finite"), "{text}");
         assert!(text.contains("403 more rejections"), "{text}");
     }

@@ -23,7 +23,7 @@ use crate::gaze::asc::AscReader;
 use crate::gaze::csv::CsvGazeReader;
 use crate::gaze::opengaze::{self, OpenGazeMessage};
 use crate::gaze::script::ScriptedGaze;
-use crate::gaze::{GazeSample, ParseError, ScreenPx};
+use crate::gaze::{Binocular, Eye, GazeSample, ParseError, ScreenPx};
 
 /// What a source gives: a sample or a reason why there is none.
 pub type SourceItem = Result<GazeSample, SourceError>;
@@ -174,21 +174,39 @@ fn peek<R: Read>(mut reader: R) -> io::Result<(Vec<u8>, impl Read)> {
     Ok((head.clone(), Read::chain(Cursor::new(head), reader)))
 }
 
-/// Opens a recording, detects its format (unless `format` says) and reads it on a thread.
+/// How a recording is read: its format (detected when `None`), the screen for pixel gaze (wins
+/// over a size declared in the file) and what becomes of a binocular recording's two eyes.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct ReadOptions {
+    /// CSV or ASC; `None` detects it from the extension or the content.
+    pub format: Option<RecordingFormat>,
+    /// Screen size for pixel gaze.
+    pub screen: Option<ScreenPx>,
+    /// The eyes of a binocular recording (default: their mean).
+    pub eyes: Binocular,
+}
+
+/// Opens a recording, detects its format (unless `options` say) and reads it on a thread.
 ///
 /// # Errors
 /// The file cannot be opened or read.
 pub fn recording(
     path: &Path,
-    format: Option<RecordingFormat>,
-    screen: Option<ScreenPx>,
+    options: ReadOptions,
 ) -> io::Result<(RecordingFormat, mpsc::Receiver<SourceItem>)> {
     let file = File::open(path)?;
     let (head, reader) = peek(file)?;
-    let format = format.unwrap_or_else(|| detect_format(Some(path), &head));
+    let format = options
+        .format
+        .unwrap_or_else(|| detect_format(Some(path), &head));
+    let name = match format {
+        RecordingFormat::Csv => "csv",
+        RecordingFormat::Asc => "asc",
+    };
+    let reader = sample_reader(format, BufReader::new(reader), &options);
     Ok((
         format,
-        reader_source(format, BufReader::new(reader), screen),
+        spawn_iter(name, reader.map(|r| r.map_err(SourceError::from))),
     ))
 }
 
@@ -202,31 +220,177 @@ pub fn reader_source<R>(
 where
     R: BufRead + Send + 'static,
 {
-    match format {
-        RecordingFormat::Csv => {
-            let mut reader = CsvGazeReader::new(reader);
-            if let Some(screen) = screen {
-                reader = reader.with_screen(screen);
-            }
-            spawn_iter("csv", reader.map(|r| r.map_err(SourceError::from)))
-        }
-        RecordingFormat::Asc => {
-            let mut reader = AscReader::new(reader);
-            if let Some(screen) = screen {
-                reader = reader.with_screen(screen);
-            }
-            spawn_iter("asc", reader.map(|r| r.map_err(SourceError::from)))
+    let options = ReadOptions {
+        format: Some(format),
+        screen,
+        ..ReadOptions::default()
+    };
+    spawn_iter(
+        "recording",
+        sample_reader(format, reader, &options).map(|r| r.map_err(SourceError::from)),
+    )
+}
+
+/// A reader of either format as one iterator, set up by `options`; it also says which eyes the
+/// recording holds once its header has been read.
+enum SampleReader<R> {
+    Csv(CsvGazeReader<R>),
+    Asc(AscReader<R>),
+}
+
+impl<R: BufRead> Iterator for SampleReader<R> {
+    type Item = Result<GazeSample, ParseError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        match self {
+            Self::Csv(r) => r.next(),
+            Self::Asc(r) => r.next(),
         }
     }
+}
+
+impl<R: BufRead> SampleReader<R> {
+    /// Whether the recording holds both eyes, as far as it has been read.
+    fn binocular(&self) -> bool {
+        match self {
+            Self::Csv(r) => r.is_binocular() == Some(true),
+            Self::Asc(r) => r.eye() == Eye::Binocular,
+        }
+    }
+}
+
+fn sample_reader<R: BufRead>(
+    format: RecordingFormat,
+    reader: R,
+    options: &ReadOptions,
+) -> SampleReader<R> {
+    match format {
+        RecordingFormat::Csv => {
+            let mut reader = CsvGazeReader::new(reader).with_binocular(options.eyes);
+            if let Some(screen) = options.screen {
+                reader = reader.with_screen(screen);
+            }
+            SampleReader::Csv(reader)
+        }
+        RecordingFormat::Asc => {
+            let mut reader = AscReader::new(reader).with_binocular(options.eyes);
+            if let Some(screen) = options.screen {
+                reader = reader.with_screen(screen);
+            }
+            SampleReader::Asc(reader)
+        }
+    }
+}
+
+/// What a look ahead into a recording found, before anything is sent: enough to refuse a file
+/// that would send nothing with one clear error, and to say what pacing will do to it.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RecordingScan {
+    /// Samples read (at most the limit the scan was given).
+    pub samples: u64,
+    /// Whether the scan read the whole file (then `samples` is all of them).
+    pub complete: bool,
+    /// Lines that did not parse.
+    pub malformed: u64,
+    /// The first of them, as the reader reported it.
+    pub first_error: Option<String>,
+    /// The sample rate: one over the median step between consecutive distinct timestamps.
+    pub rate_hz: Option<f64>,
+    /// Whether the recording holds both eyes.
+    pub binocular: bool,
+    /// The eye the samples are tagged with (of the first sample).
+    pub eye: Option<Eye>,
+}
+
+impl RecordingScan {
+    /// Why nothing would be sent from `path`, if nothing would: one sentence for the one error.
+    #[must_use]
+    pub fn nothing_to_send(&self, path: &Path) -> Option<String> {
+        if self.samples > 0 {
+            return None;
+        }
+        Some(match &self.first_error {
+            None => format!(
+                "{} has no gaze sample to send: it has no data line (it is empty, or holds only \
+                 a header and comments)",
+                path.display()
+            ),
+            Some(first) => format!(
+                "{} has no gaze sample to send: all {} of its data lines were skipped; the \
+                 first: {first}",
+                path.display(),
+                self.malformed
+            ),
+        })
+    }
+}
+
+/// Reads up to `max_samples` samples of the recording at `path` (all of it when it holds no
+/// more), without sending anything.
+///
+/// # Errors
+/// The file cannot be opened or read.
+pub fn scan_recording(
+    path: &Path,
+    options: ReadOptions,
+    max_samples: u64,
+) -> io::Result<RecordingScan> {
+    let file = File::open(path)?;
+    let (head, reader) = peek(file)?;
+    let format = options
+        .format
+        .unwrap_or_else(|| detect_format(Some(path), &head));
+    let mut reader = sample_reader(format, BufReader::new(reader), &options);
+    let mut scan = RecordingScan {
+        complete: true,
+        ..RecordingScan::default()
+    };
+    let mut steps = Vec::new();
+    let mut previous: Option<f64> = None;
+    for item in reader.by_ref() {
+        match item {
+            Ok(sample) => {
+                scan.samples += 1;
+                scan.eye.get_or_insert(sample.eye);
+                if let Some(p) = previous
+                    && sample.t_s > p
+                {
+                    steps.push(sample.t_s - p);
+                }
+                previous = Some(sample.t_s);
+                if scan.samples >= max_samples {
+                    scan.complete = false;
+                    break;
+                }
+            }
+            Err(ParseError::Io { line, source }) => {
+                return Err(io::Error::new(
+                    source.kind(),
+                    format!("line {line}: {source}"),
+                ));
+            }
+            Err(err) => {
+                scan.malformed += 1;
+                scan.first_error.get_or_insert_with(|| err.to_string());
+            }
+        }
+    }
+    scan.binocular = reader.binocular();
+    steps.sort_by(f64::total_cmp);
+    scan.rate_hz = steps
+        .get(steps.len() / 2)
+        .map(|step| 1.0 / step)
+        .filter(|r| r.is_finite());
+    Ok(scan)
 }
 
 /// CSV lines from standard input, each forwarded as soon as its line ends (the CSV reader pulls
 /// one line per sample, so nothing waits for more input than the current line).
 #[must_use]
-pub fn stdin_csv(screen: Option<ScreenPx>) -> mpsc::Receiver<SourceItem> {
+pub fn stdin_csv(screen: Option<ScreenPx>, eyes: Binocular) -> mpsc::Receiver<SourceItem> {
     // The lock is taken on the reader thread: `StdinLock` cannot cross threads.
     spawn_with("stdin", move || {
-        let mut reader = CsvGazeReader::new(io::stdin().lock());
+        let mut reader = CsvGazeReader::new(io::stdin().lock()).with_binocular(eyes);
         if let Some(screen) = screen {
             reader = reader.with_screen(screen);
         }
@@ -448,6 +612,59 @@ mod tests {
         let mut all = Vec::new();
         rest.read_to_end(&mut all).expect("reads");
         assert_eq!(all, data);
+    }
+
+    #[test]
+    fn a_scan_finds_the_rate_the_eyes_and_files_that_send_nothing() {
+        let dir = std::env::temp_dir();
+        let write = |name: &str, text: &str| {
+            let path = dir.join(format!("foveal-scan-{}-{name}", std::process::id()));
+            std::fs::write(&path, text).expect("write");
+            path
+        };
+        let options = ReadOptions::default();
+        let binocular = write(
+            "bino.csv",
+            "t_s,x_left,y_left,x_right,y_right\n0,0.2,0.5,0.8,0.5\n0.002,0.2,0.5,0.8,0.5\n\
+             0.004,0.2,0.5,0.8,0.5\n",
+        );
+        let scan = scan_recording(&binocular, options, 1000).expect("scans");
+        assert_eq!(
+            (scan.samples, scan.complete, scan.binocular),
+            (3, true, true)
+        );
+        assert!((scan.rate_hz.expect("a rate") - 500.0).abs() < 1e-6);
+        let left = ReadOptions {
+            eyes: Binocular::Left,
+            ..options
+        };
+        assert_eq!(
+            scan_recording(&binocular, left, 2).expect("scans"),
+            RecordingScan {
+                samples: 2,
+                complete: false,
+                rate_hz: Some(1.0 / 0.002),
+                binocular: true,
+                eye: Some(Eye::Left),
+                ..RecordingScan::default()
+            }
+        );
+        for (name, text, why) in [
+            ("empty.csv", "", "no data line"),
+            ("header.csv", "# a comment\nt_s,x,y\n", "no data line"),
+            (
+                "noscreen.csv",
+                "t_s,xpos,ypos\n0,1,2\n0.001,1,2\n",
+                "all 2 of its data lines were skipped; the first: line 2: field `xpos`",
+            ),
+        ] {
+            let path = write(name, text);
+            let scan = scan_recording(&path, options, 1000).expect("scans");
+            let message = scan.nothing_to_send(&path).expect("nothing to send");
+            assert!(message.contains(why), "{message}");
+            let _ = std::fs::remove_file(path);
+        }
+        let _ = std::fs::remove_file(binocular);
     }
 
     #[test]

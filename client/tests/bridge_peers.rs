@@ -254,6 +254,8 @@ async fn lsl_run(
         channels,
         resolve_timeout: Duration::from_secs(10),
         resolve_addresses: vec!["127.0.0.1".parse().expect("address")],
+        // The outlet closing ends the source (with an error) instead of being waited for.
+        reconnect: false,
         ..LslOptions::default()
     };
     // The outlet's time service answers, and on one machine its clock is the inlet's.
@@ -267,10 +269,9 @@ async fn lsl_run(
     let source = lsl::lsl(options);
     let (report, seen) = bridge_into(&server, source).await;
     server.stop().await;
-    let samples = seen
-        .into_iter()
-        .map(|i| i.unwrap_or_else(|e| panic!("source failed: {e}")))
-        .collect();
+    // The last item is the error that ends the source (the outlet closed); none before it.
+    let samples: Vec<GazeSample> = seen.iter().filter_map(|i| i.clone().ok()).collect();
+    assert_eq!(samples.len() + 1, seen.len(), "{seen:?}");
     Some((report, samples))
 }
 
@@ -284,8 +285,19 @@ const LSL_EXPECTED: [(f64, Option<(f64, f64)>); 5] = [
     (1000.04, Some((0.70, 0.80))),
 ];
 
+/// The outlet closed, and the bridge was told not to wait for it: an error, not a success.
+fn assert_closed_without_waiting(report: &BridgeReport) {
+    let StopReason::SourceFailed(why) = &report.stopped else {
+        panic!("the closed outlet is a failure: {report}");
+    };
+    assert!(
+        why.contains("the outlet closed the stream") && why.contains("--no-reconnect"),
+        "{why}"
+    );
+}
+
 fn check_lsl(report: &BridgeReport, samples: &[GazeSample], scale: (f64, f64)) {
-    assert_eq!(report.stopped, StopReason::EndOfInput, "{report}");
+    assert_closed_without_waiting(report);
     assert_eq!(samples.len(), LSL_EXPECTED.len(), "{samples:?}");
     for (s, (t, position)) in samples.iter().zip(LSL_EXPECTED) {
         // Outlet and inlet share this machine's clock: the correction is well under 1 ms.
@@ -331,4 +343,96 @@ async fn lsl_double_outlet_with_other_channels_in_pixels() {
         return;
     };
     check_lsl(&report, &samples, (0.5, 0.25));
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn lsl_chunks_stamped_when_pushed_lose_no_sample() {
+    // Two chunks of five at 100 Hz, the second stamped 30 ms early: by their stamps it would
+    // begin 30 ms before the first ends.
+    let name = format!("foveal-chunks-{}", std::process::id());
+    let Some((report, samples)) = lsl_run(&name, &["--chunks"], ChannelMap::default()).await else {
+        return;
+    };
+    assert_closed_without_waiting(&report);
+    assert_eq!(samples.len(), 10, "{samples:?}");
+    for (k, s) in samples.iter().enumerate() {
+        let t = 1000.0 + 0.01 * k as f64;
+        assert!((s.t_s - t).abs() < 1e-3, "sample {k} at {} for {t}", s.t_s);
+    }
+    assert_eq!(
+        (report.summary.accepted, report.summary.rejected),
+        (10, 0),
+        "{report}"
+    );
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn lsl_bridge_waits_for_a_restarted_outlet_and_says_so() {
+    let Some(python) = peer_python() else { return };
+    let _one_outlet = LSL_OUTLET.lock().await;
+    let name = format!("foveal-restart-{}", std::process::id());
+    let _peer = start_peer(&python, "lsl_outlet.py", &["--name", &name, "--restart"]);
+    let server = TestServer::start().await;
+    let addr = server.addr.clone();
+    let (stdout, stderr) = tokio::task::spawn_blocking(move || {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_foveal"))
+            .env("RUST_LOG", "info")
+            .args(["bridge", "--addr", &addr, "lsl", "--name", &name])
+            .args(["--resolve-timeout", "10"])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("start foveal");
+        let stderr = child.stderr.take().expect("piped stderr");
+        let (tx, rx) = std_mpsc::channel();
+        std::thread::spawn(move || {
+            for line in BufReader::new(stderr).lines().map_while(Result::ok) {
+                if tx.send(line).is_err() {
+                    break;
+                }
+            }
+        });
+        // Until the outlet has come back, sent its samples and closed again.
+        let mut log = Vec::new();
+        let mut back = false;
+        loop {
+            let line = rx
+                .recv_timeout(Duration::from_secs(60))
+                .unwrap_or_else(|_| panic!("the bridge went quiet: {log:#?}"));
+            back |= line.contains("reconnected");
+            let closed_again = back && line.contains("the outlet closed the stream");
+            log.push(line);
+            if closed_again {
+                break;
+            }
+        }
+        let interrupted = Command::new("kill")
+            .args(["-INT", &child.id().to_string()])
+            .status()
+            .expect("kill runs");
+        assert!(interrupted.success());
+        let out = child.wait_with_output().expect("foveal ends");
+        log.extend(rx.try_iter());
+        (
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            log.join("\n"),
+        )
+    })
+    .await
+    .expect("join");
+    assert!(
+        stderr.contains("the LSL outlet is back: reconnected, receiving the stream again"),
+        "{stderr}"
+    );
+    assert!(stdout.contains("stopped: interrupted"), "{stdout}");
+    // Five samples before the restart (one NaN), two after.
+    assert!(
+        stdout.contains("7 samples (6 valid, 1 invalid)"),
+        "{stdout}\n{stderr}"
+    );
+    assert!(
+        stdout.contains("accepted 6, rejected 1 (missing 1)"),
+        "{stdout}"
+    );
+    server.stop().await;
 }

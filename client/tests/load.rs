@@ -40,6 +40,7 @@ async fn a_short_load_keeps_the_rate_and_loses_no_accepted_sample() {
         duration: Duration::from_secs(4),
         server_pid: Some(std::process::id()),
         sample_every: Duration::from_secs(1),
+        chaos: None,
     };
     let report = load::run(&options).await.expect("load runs");
     println!("{report}");
@@ -94,5 +95,65 @@ async fn samples_over_the_rate_limit_show_in_the_send_summary() {
     );
     assert!(summary.rate_limited > 0, "{summary}");
     assert!(summary.to_string().contains("rate-limited"), "{summary}");
+    server.stop().await.expect("clean stop");
+}
+
+/// `foveal load --chaos`, a few seconds of it: every kind of disorder happens and is counted, the
+/// steady streams' samples are all accounted for, and fresh clients are answered. How fast they
+/// are answered is the bench's business (docs/BENCHMARKS.md), not this test's.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_short_chaos_run_does_every_kind_of_harm_and_accounts_for_every_sample() {
+    use foveal_client::load::ChaosOptions;
+    const ADMIN: &str = "admin-load-token-0123456789";
+    let mut config = small_config(100, 30.0);
+    let mut tokens = Tokens::none();
+    tokens.add(Role::Admin, ADMIN, "test").expect("token");
+    config.security.tokens = tokens;
+    let server = TestServer::start(config).await;
+    drop(server.channel().await);
+    let admin = ConnectOptions {
+        token: Some(ADMIN.into()),
+        ca_pem: None,
+    };
+    let options = LoadOptions {
+        addr: server.url(),
+        gaze: admin.clone(),
+        viewer: admin.clone(),
+        streams: 2,
+        rate_hz: 200.0,
+        watchers: 4,
+        stalled: 1,
+        poses: false,
+        duration: Duration::from_secs(3),
+        server_pid: Some(std::process::id()),
+        sample_every: Duration::from_secs(1),
+        chaos: Some(ChaosOptions {
+            admin,
+            kill_every: Duration::from_millis(300),
+            idle_connections: 12,
+            stalled_bodies: 2,
+            renew_every: Duration::from_secs(1),
+            configure_every: Duration::from_millis(500),
+            probe_every: Duration::from_millis(250),
+            probe_timeout: Duration::from_secs(10),
+        }),
+    };
+    let report = load::run(&options).await.expect("load runs");
+    println!("{report}");
+    let chaos = report.chaos.as_ref().expect("a chaos report");
+    assert!(chaos.killed >= 2, "{report}");
+    assert!(
+        chaos.idle_opened >= 12 && chaos.stalled_bodies >= 2,
+        "{report}"
+    );
+    assert!(chaos.configures.0 >= 2, "{report}");
+    assert!(chaos.probes.0 >= 4, "{report}");
+    assert_eq!(report.stream_errors, 0, "{report}");
+    assert_eq!(
+        report.samples_accepted + report.samples_rejected + report.samples_rate_limited,
+        report.samples_sent,
+        "{report}"
+    );
+    assert_eq!(report.samples_accepted, report.samples_sent, "{report}");
     server.stop().await.expect("clean stop");
 }

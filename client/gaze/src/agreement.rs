@@ -116,26 +116,36 @@ pub fn match_events(detected: &[Interval], reference: &[Interval]) -> Vec<(usize
 /// Agreement of `detected` with `reference`.
 #[must_use]
 pub fn compare(detected: &[Interval], reference: &[Interval]) -> Agreement {
-    let pairs = match_events(detected, reference);
-    let onsets: Vec<f64> = pairs
-        .iter()
-        .map(|&(i, j)| detected[i].start_s - reference[j].start_s)
-        .collect();
-    let offsets: Vec<f64> = pairs
-        .iter()
-        .map(|&(i, j)| detected[i].end_s - reference[j].end_s)
-        .collect();
-    let precision = ratio(pairs.len(), detected.len());
-    let recall = ratio(pairs.len(), reference.len());
+    compare_groups(&[(detected, reference)])
+}
+
+/// Agreement pooled over groups that must not match across one another (the eyes of a
+/// binocular recording: a left-eye detection may only match a left-eye reference fixation).
+/// Events are matched within each `(detected, reference)` group; the counts and the timing
+/// differences of all groups are then pooled, so each event counts once, as in [`compare`].
+#[must_use]
+pub fn compare_groups(groups: &[(&[Interval], &[Interval])]) -> Agreement {
+    let (mut detected, mut reference, mut matched) = (0, 0, 0);
+    let (mut onsets, mut offsets) = (Vec::new(), Vec::new());
+    for &(d, r) in groups {
+        let pairs = match_events(d, r);
+        detected += d.len();
+        reference += r.len();
+        matched += pairs.len();
+        onsets.extend(pairs.iter().map(|&(i, j)| d[i].start_s - r[j].start_s));
+        offsets.extend(pairs.iter().map(|&(i, j)| d[i].end_s - r[j].end_s));
+    }
+    let precision = ratio(matched, detected);
+    let recall = ratio(matched, reference);
     let f1 = if precision + recall > 0.0 {
         2.0 * precision * recall / (precision + recall)
     } else {
         0.0
     };
     Agreement {
-        detected: detected.len(),
-        reference: reference.len(),
-        matched: pairs.len(),
+        detected,
+        reference,
+        matched,
         precision,
         recall,
         f1,
@@ -169,6 +179,20 @@ mod tests {
         assert!((a.onset.p90_abs_s - 0.35).abs() < 1e-12);
         assert!((a.offset.median_signed_s - 0.015).abs() < 1e-12);
         assert!((a.offset.p90_abs_s - 0.04).abs() < 1e-12);
+    }
+
+    #[test]
+    fn groups_never_match_across_one_another() {
+        // Each group's detection lies on the other group's reference: pooled into one list they
+        // would match perfectly, kept apart nothing matches.
+        let (d0, r0) = ([iv(0.0, 1.0)], [iv(2.0, 3.0)]);
+        let (d1, r1) = ([iv(2.0, 3.0)], [iv(0.0, 1.0)]);
+        let a = compare_groups(&[(&d0, &r0), (&d1, &r1)]);
+        assert_eq!((a.detected, a.reference, a.matched), (2, 2, 0));
+        // One group is exactly `compare`.
+        let one = compare_groups(&[(&d0, &r1)]);
+        assert_eq!(one, compare(&d0, &r1));
+        assert_eq!(one.f1, 1.0);
     }
 
     #[test]

@@ -319,6 +319,39 @@ pub fn shortinfo_request(query: &str, return_port: u16, query_id: &str) -> Strin
     format!("LSL:shortinfo\r\n{query}\r\n{return_port} {query_id}\r\n")
 }
 
+/// The query that finds `info`'s stream again after its outlet went away: the same name, type
+/// and, when the outlet gave one, `source_id` (a restarted outlet keeps its source id but not its
+/// `uid`), as liblsl's inlet recovery does; the type and name looked for first when a value
+/// cannot be quoted.
+///
+/// # Errors
+/// [`LslError::BadRequest`] when the fallback values hold a single quote.
+pub fn recovery_query(
+    info: &StreamInfo,
+    type_: &str,
+    name: Option<&str>,
+) -> Result<String, LslError> {
+    let mut query = format!(
+        "session_id={} and type={}",
+        literal("session", DEFAULT_SESSION)?,
+        literal("type", &info.type_).or_else(|_| literal("type", type_))?
+    );
+    match literal("name", &info.name) {
+        Ok(n) => query.push_str(&format!(" and name={n}")),
+        Err(_) => {
+            if let Some(name) = name {
+                query.push_str(&format!(" and name={}", literal("name", name)?));
+            }
+        }
+    }
+    if !info.source_id.is_empty()
+        && let Ok(id) = literal("source_id", &info.source_id)
+    {
+        query.push_str(&format!(" and source_id={id}"));
+    }
+    Ok(query)
+}
+
 /// The stream info of a resolve reply to `query_id`; `None` for a reply to another query.
 ///
 /// # Errors
@@ -485,6 +518,71 @@ pub fn deduced_timestamp(previous: f64, nominal_srate: f64) -> f64 {
         previous + 1.0 / nominal_srate
     } else {
         previous
+    }
+}
+
+/// The time of each sample of one outlet's feed, on the outlet's clock.
+///
+/// An outlet that pushes a chunk with one time stamp (that of its newest sample, as LSL's
+/// `push_chunk` documents) sends the chunk's first sample with that stamp less the chunk's length
+/// at the nominal rate and the others as deduced (previous plus one sampling interval). When
+/// chunks are stamped when they are pushed, a chunk pushed late followed by one pushed on time
+/// overlap: the second begins before the first ends, and its first samples would reach the
+/// server as time going backwards and be lost. The samples of a stream with a nominal rate are
+/// one interval apart, so such a chunk is placed right after the previous sample, one nominal
+/// interval later, and its deduced samples follow from there. The shift is bounded
+/// ([`Self::MAX_SHIFT_S`]): an outlet whose clock really stepped back is passed on as it is.
+#[derive(Debug, Clone)]
+pub struct SampleClock {
+    nominal_srate: f64,
+    previous: Option<f64>,
+    shifted: u64,
+}
+
+impl SampleClock {
+    /// Largest step a transmitted time stamp is moved forward, seconds: more than any chunk's
+    /// push jitter, far less than a clock that went back.
+    pub const MAX_SHIFT_S: f64 = 1.0;
+
+    /// The clock of a stream with this nominal rate (0: irregular, never re-timed).
+    #[must_use]
+    pub fn new(nominal_srate: f64) -> Self {
+        Self {
+            nominal_srate,
+            previous: None,
+            shifted: 0,
+        }
+    }
+
+    /// The time of a sample that came with time stamp `t`.
+    pub fn transmitted(&mut self, t: f64) -> f64 {
+        let t = match self.previous {
+            Some(previous) if self.nominal_srate > 0.0 && t < previous => {
+                let next = previous + 1.0 / self.nominal_srate;
+                if next - t <= Self::MAX_SHIFT_S {
+                    self.shifted += 1;
+                    next
+                } else {
+                    t
+                }
+            }
+            _ => t,
+        };
+        self.previous = Some(t);
+        t
+    }
+
+    /// The time of a sample sent with a deduced time stamp.
+    pub fn deduced(&mut self) -> f64 {
+        let t = deduced_timestamp(self.previous.unwrap_or(0.0), self.nominal_srate);
+        self.previous = Some(t);
+        t
+    }
+
+    /// Transmitted time stamps moved forward so far (count).
+    #[must_use]
+    pub fn shifted(&self) -> u64 {
+        self.shifted
     }
 }
 
@@ -665,6 +763,53 @@ mod tests {
             query("Ga'ze", None),
             Err(LslError::BadRequest { field: "type", .. })
         ));
+    }
+
+    #[test]
+    fn a_chunk_overlapping_the_previous_one_follows_it_at_the_nominal_rate() {
+        // 100 Hz, chunks of 5 stamped when pushed: the second pushed 30 ms early.
+        let mut clock = SampleClock::new(100.0);
+        let mut times = Vec::new();
+        for stamp in [1000.04, 1000.06] {
+            times.push(clock.transmitted(stamp - 0.04));
+            for _ in 0..4 {
+                times.push(clock.deduced());
+            }
+        }
+        for (k, t) in times.iter().enumerate() {
+            let expected = 1000.0 + 0.01 * k as f64;
+            assert!(
+                (t - expected).abs() < 1e-9,
+                "sample {k}: {t} for {expected}"
+            );
+        }
+        assert_eq!(clock.shifted(), 1);
+        // A later chunk is taken as stamped; a clock that went far back is not re-timed.
+        assert_eq!(clock.transmitted(1001.0), 1001.0);
+        assert_eq!(clock.transmitted(10.0), 10.0);
+        // Without a nominal rate nothing is re-timed.
+        let mut irregular = SampleClock::new(0.0);
+        assert_eq!(irregular.transmitted(5.0), 5.0);
+        assert_eq!(irregular.transmitted(4.0), 4.0);
+        assert_eq!(irregular.deduced(), 4.0);
+    }
+
+    #[test]
+    fn recovery_finds_the_same_source_again() {
+        let info = StreamInfo::parse(SHORTINFO).expect("parses");
+        assert_eq!(
+            recovery_query(&info, "Gaze", None).expect("quotable"),
+            "session_id='default' and type='Gaze' and name='Tobii & co' and source_id='tracker-1'"
+        );
+        let odd = StreamInfo {
+            name: "it's".into(),
+            source_id: String::new(),
+            ..info
+        };
+        assert_eq!(
+            recovery_query(&odd, "Gaze", Some("x")).expect("falls back"),
+            "session_id='default' and type='Gaze' and name='x'"
+        );
     }
 
     #[test]
