@@ -10,7 +10,12 @@ export const COLOURS = {
   body: new THREE.Color(0x7f8ea3),
   real: new THREE.Color(0x2fbf71),
   deemed: new THREE.Color(0xff4d4d),
+  /** Every body but the pair in a close-up (see focusOn). */
+  dimmed: new THREE.Color(0x2a3038),
 } as const;
+
+/** The camera's near plane, scene units (the server's camera and orbiting). */
+const NEAR = 0.05;
 
 export class SceneView {
   readonly renderer: THREE.WebGLRenderer;
@@ -34,13 +39,13 @@ export class SceneView {
     this.software = /swiftshader|llvmpipe|software/i.test(name);
     // On the CPU, presenting the canvas costs the page's main thread far more than drawing it:
     // fewer pixels keep input (the gaze) and the frame stream responsive.
-    this.renderer.setPixelRatio(this.software ? 0.5 : Math.min(window.devicePixelRatio, 2));
+    this.sharp(false);
     this.scene.background = new THREE.Color(0x101418);
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x303040, 2.2));
     const sun = new THREE.DirectionalLight(0xffffff, 1.5);
     sun.position.set(1, 2, 3);
     this.scene.add(sun);
-    this.camera = new THREE.PerspectiveCamera(40, 1.6, 0.05, 1000);
+    this.camera = new THREE.PerspectiveCamera(40, 1.6, NEAR, 1000);
     this.controls = new OrbitControls(this.camera, canvas);
     this.controls.enableDamping = false;
   }
@@ -88,8 +93,73 @@ export class SceneView {
     this.resetView();
   }
 
+  /**
+   * Frame two bodies close up: orbit target at their midpoint, looking across the line between
+   * their centres (so a gap between them is seen side on) from the side nearest the server's view
+   * that no other body blocks, at a distance where their bounding sphere fills the height. Bodies
+   * nearer the camera than the pair are clipped away. `centres` holds every body's centre
+   * (x, y, z, stride 16: the instance matrices); `radius` is R.
+   */
+  focusOn(a: number, b: number, centres: Float32Array, radius: number): void {
+    const at = (i: number) => new THREE.Vector3(centres[16 * i + 12], centres[16 * i + 13], centres[16 * i + 14]);
+    const pa = at(a), pb = at(b);
+    const mid = pa.clone().add(pb).multiplyScalar(0.5);
+    const line = pb.clone().sub(pa);
+    const reach = line.length() / 2 + radius; // the pair's bounding sphere about the midpoint
+    const u = line.lengthSq() > 0 ? line.normalize() : new THREE.Vector3(1, 0, 0);
+    const home = this.home.eye.clone().sub(this.home.target).normalize();
+    let side = home.clone().addScaledVector(u, -home.dot(u));
+    if (side.lengthSq() < 1e-6) side = new THREE.Vector3(0, 1, 0).cross(u);
+    if (side.lengthSq() < 1e-6) side = new THREE.Vector3(0, 0, 1);
+    side.normalize();
+    const fov = THREE.MathUtils.degToRad(this.camera.fov);
+    const distance = reach / Math.sin(fov / 2);
+    // Candidate directions about the line of centres, nearest the server's view first; the first
+    // with no other body in the cone of sight from the eye to the pair's bounding sphere wins
+    // (else the least blocked). Directions nearly along "up" are skipped (orbiting needs an up).
+    const n = centres.length / 16;
+    let best = side.clone(), fewest = Infinity;
+    for (let k = 0; k < 24 && fewest > 0; k++) {
+      const angle = (k % 2 ? -1 : 1) * Math.ceil(k / 2) * (Math.PI / 12);
+      const dir = side.clone().applyAxisAngle(u, angle);
+      if (Math.abs(dir.y) > 0.95) continue;
+      const eye = mid.clone().addScaledVector(dir, distance);
+      let blocked = 0;
+      for (let i = 0; i < n; i++) {
+        if (i === a || i === b) continue;
+        const c = at(i).sub(eye);
+        const t = -c.dot(dir) / distance; // 0 at the eye, 1 at the midpoint
+        if (t <= 0 || t >= 1) continue;
+        const off = c.addScaledVector(dir, t * distance).length();
+        if (off < radius + reach * t) blocked++;
+      }
+      if (blocked < fewest) (fewest = blocked), (best = dir);
+    }
+    this.camera.position.copy(mid).addScaledVector(best, distance);
+    this.controls.target.copy(mid);
+    this.camera.near = Math.max(0.01, distance - reach - 0.05 * radius);
+    this.camera.up.set(0, 1, 0);
+    this.camera.lookAt(mid);
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+    this.focused = true;
+    this.sharp(true);
+  }
+
+  /** A world point on the canvas, as fractions of its width and height (0, 0 top left). */
+  toScreen(p: number[]): { x: number; y: number } {
+    const v = new THREE.Vector3(p[0], p[1], p[2]).project(this.camera);
+    return { x: (v.x + 1) / 2, y: (1 - v.y) / 2 };
+  }
+
+  /** Whether the view is framed on a pair (focusOn) rather than the server's or an orbited camera. */
+  focused = false;
+
   /** Back to the server's camera, the one gaze coordinates and P are measured through. */
   resetView(): void {
+    if (this.focused) this.sharp(false);
+    this.focused = false;
+    this.camera.near = NEAR;
     this.camera.position.copy(this.home.eye);
     this.controls.target.copy(this.home.target);
     this.camera.up.set(0, 1, 0);
@@ -118,10 +188,13 @@ export class SceneView {
     this.mesh.instanceMatrix.needsUpdate = true;
   }
 
-  /** Colour every body: the plain colour, then the real and deemed pairs' bodies. */
-  colour(marks: (set: (body: number, c: THREE.Color) => void) => void): void {
+  /**
+   * Colour every body: the plain colour (or COLOURS.dimmed with `dimmed`), then the real and
+   * deemed pairs' bodies.
+   */
+  colour(marks: (set: (body: number, c: THREE.Color) => void) => void, dimmed = false): void {
     const col = this.colours;
-    const { r, g, b } = COLOURS.body;
+    const { r, g, b } = dimmed ? COLOURS.dimmed : COLOURS.body;
     for (let i = 0; i < col.length; i += 3) {
       col[i] = r;
       col[i + 1] = g;
@@ -136,6 +209,16 @@ export class SceneView {
       }
     });
     if (this.mesh?.instanceColor) this.mesh.instanceColor.needsUpdate = true;
+  }
+
+  /**
+   * Draw at the display's full resolution even on a CPU rasteriser, for a close-up (a held frame:
+   * the page's input and frame stream matter less there than a picture sharp enough to judge a
+   * gap by), or back to the usual resolution.
+   */
+  sharp(on: boolean): void {
+    const full = Math.min(window.devicePixelRatio, 2);
+    this.renderer.setPixelRatio(on || !this.software ? full : 0.5);
   }
 
   /** Fit the drawing buffer to the canvas's CSS size. */
