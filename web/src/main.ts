@@ -142,6 +142,10 @@ function onFrame(f: Frame): void {
 
   const t0 = performance.now();
   const bodies = show(f);
+  // The full tessellation where the viewer looks: every body reaching into the foveal region.
+  const fix = f.fixation;
+  view.setDetailRegion(fix && region ? { x: fix.x, y: fix.y, rx: region.rx, ry: region.ry } : null);
+  view.commit();
   const t1 = performance.now();
   push(stats.updateMs, t1 - t0, 300);
   if (stats.framesReceived % 10 === 0) {

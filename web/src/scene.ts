@@ -3,7 +3,7 @@
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { SceneDescription } from "./gen/foveal/v1/foveal_pb";
-import { starDims, starGeometry } from "./star";
+import { peripheralStarGeometry, starDims, starGeometry } from "./star";
 
 /** Colours of the legend, shared with the page's CSS swatches. */
 export const COLOURS = {
@@ -22,7 +22,26 @@ export class SceneView {
   readonly scene = new THREE.Scene();
   readonly camera: THREE.PerspectiveCamera;
   readonly controls: OrbitControls;
+  /**
+   * Two instanced meshes of the star: the full tessellation (within 0.005R of the tested star)
+   * for the bodies reaching into the foveal region, and a coarser one (within 0.035R, 56
+   * triangles instead of 192) for the rest. On a CPU rasteriser a draw's cost grows with its triangles; what the
+   * viewer looks at stays exact. Orbited or framed on a pair, every body gets the full one.
+   */
   mesh: THREE.InstancedMesh | null = null;
+  peripheral: THREE.InstancedMesh | null = null;
+  /**
+   * Where the full tessellation is drawn, in the server's screen coordinates (fractions of width
+   * and height): an ellipse about the fixation. Null: everywhere.
+   */
+  detailRegion: { x: number; y: number; rx: number; ry: number } | null = null;
+  /** Every body's pose and colour as the frame gave them, before the split between the meshes. */
+  private poses: Float32Array = new Float32Array(0);
+  private bodies = 0;
+  private radius = 0;
+  private dirty = false;
+  /** The server camera's view-projection matrix, for the split. */
+  private homeViewProjection = new THREE.Matrix4();
   /** WebGL runs on the CPU (SwiftShader, llvmpipe): no GPU, as in headless browsers. */
   readonly software: boolean;
   /** The server's camera, for reset and for telling whether the view was orbited. */
@@ -54,22 +73,30 @@ export class SceneView {
   load(d: SceneDescription): void {
     const cfg = d.config;
     const n = cfg?.bodies ?? 0;
-    if (this.mesh) {
-      this.scene.remove(this.mesh);
-      this.mesh.geometry.dispose();
-      this.mesh.dispose();
+    for (const old of [this.mesh, this.peripheral]) {
+      if (!old) continue;
+      this.scene.remove(old);
+      old.geometry.dispose();
+      old.dispose();
     }
     const material = new THREE.MeshLambertMaterial({ color: 0xffffff });
-    const mesh = new THREE.InstancedMesh(starGeometry(starDims(d)), material, n);
-    mesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
-    mesh.frustumCulled = false;
+    const instanced = (geometry: THREE.BufferGeometry) => {
+      const mesh = new THREE.InstancedMesh(geometry, material, n);
+      mesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
+      mesh.frustumCulled = false;
+      mesh.instanceColor = new THREE.InstancedBufferAttribute(new Float32Array(3 * n), 3);
+      mesh.instanceColor.setUsage(THREE.DynamicDrawUsage);
+      // Hidden until the first frame's poses arrive (identity matrices would stack at the origin).
+      mesh.count = 0;
+      this.scene.add(mesh);
+      return mesh;
+    };
+    this.mesh = instanced(starGeometry(starDims(d)));
+    this.peripheral = instanced(peripheralStarGeometry(starDims(d)));
+    this.radius = starDims(d).radius;
+    this.poses = new Float32Array(16 * n);
     this.colours = new Float32Array(3 * n);
-    mesh.instanceColor = new THREE.InstancedBufferAttribute(this.colours, 3);
-    mesh.instanceColor.setUsage(THREE.DynamicDrawUsage);
-    // Hidden until the first frame's poses arrive (identity matrices would stack at the origin).
-    mesh.count = 0;
-    this.mesh = mesh;
-    this.scene.add(mesh);
+    this.bodies = 0;
 
     const o = d.volumeOrigin ?? { x: 0, y: 0, z: 0 };
     const side = d.volumeSide;
@@ -152,6 +179,8 @@ export class SceneView {
     return { x: (v.x + 1) / 2, y: (1 - v.y) / 2 };
   }
 
+  private wasOrbited = false;
+
   /** Whether the view is framed on a pair (focusOn) rather than the server's or an orbited camera. */
   focused = false;
 
@@ -166,6 +195,9 @@ export class SceneView {
     this.camera.lookAt(this.home.target);
     this.camera.updateProjectionMatrix();
     this.controls.update();
+    this.camera.updateMatrixWorld();
+    this.homeViewProjection.multiplyMatrices(this.camera.projectionMatrix, this.camera.matrixWorldInverse);
+    this.dirty = true;
   }
 
   /** Whether the user orbited away from the server's camera. */
@@ -178,14 +210,73 @@ export class SceneView {
 
   /** The instance matrices to write a frame's poses into. */
   matrices(): Float32Array {
-    return this.mesh ? (this.mesh.instanceMatrix.array as Float32Array) : new Float32Array(0);
+    return this.poses;
   }
 
   /** Mark `bodies` matrices as written. */
   posesWritten(bodies: number): void {
-    if (!this.mesh) return;
-    this.mesh.count = bodies;
-    this.mesh.instanceMatrix.needsUpdate = true;
+    this.bodies = bodies;
+    this.dirty = true;
+  }
+
+  /** Hand what changed since the last call (poses, colours, detail region) to the meshes. */
+  commit(): void {
+    if (!this.dirty) return;
+    this.split();
+    this.dirty = false;
+  }
+
+  /** Where the full tessellation is drawn (see detailRegion). */
+  setDetailRegion(r: { x: number; y: number; rx: number; ry: number } | null): void {
+    const o = this.detailRegion;
+    if (o === r || (o && r && o.x === r.x && o.y === r.y && o.rx === r.rx && o.ry === r.ry)) return;
+    this.detailRegion = r;
+    this.dirty = true;
+  }
+
+  /**
+   * Copy each body's pose and colour into the mesh it is drawn with: the full one when it reaches
+   * into the detail region as the server's camera sees it (its centre within the region widened
+   * by the body's bounding radius on screen), the peripheral one otherwise.
+   */
+  private split(): void {
+    const fine = this.mesh, coarse = this.peripheral;
+    if (!fine?.instanceColor || !coarse?.instanceColor) return;
+    const m = this.poses, col = this.colours, e = this.homeViewProjection.elements;
+    const region = this.orbited() ? null : this.detailRegion;
+    const out = [fine, coarse].map((mesh) => ({
+      m: mesh.instanceMatrix.array as Float32Array,
+      c: mesh.instanceColor!.array as Float32Array,
+      n: 0,
+    }));
+    for (let i = 0; i < this.bodies; i++) {
+      const o = 16 * i;
+      let near = true;
+      if (region) {
+        const x = m[o + 12], y = m[o + 13], z = m[o + 14];
+        const w = e[3] * x + e[7] * y + e[11] * z + e[15];
+        if (w <= 0) near = false;
+        else {
+          const dx = ((e[0] * x + e[4] * y + e[8] * z + e[12]) / w + 1) / 2 - region.x;
+          const dy = (1 - (e[1] * x + e[5] * y + e[9] * z + e[13]) / w) / 2 - region.y;
+          // R on screen, as fractions of width and height (half the projection's scale at depth w).
+          const rx = region.rx + (e[0] * this.radius) / (2 * w), ry = region.ry + (e[5] * this.radius) / (2 * w);
+          near = (dx / rx) ** 2 + (dy / ry) ** 2 <= 1;
+        }
+      }
+      const t = out[near ? 0 : 1];
+      const to = 16 * t.n;
+      for (let k = 0; k < 16; k++) t.m[to + k] = m[o + k];
+      t.c[3 * t.n] = col[3 * i];
+      t.c[3 * t.n + 1] = col[3 * i + 1];
+      t.c[3 * t.n + 2] = col[3 * i + 2];
+      t.n++;
+    }
+    [fine, coarse].forEach((mesh, k) => {
+      mesh.count = out[k].n;
+      mesh.instanceMatrix.needsUpdate = true;
+      mesh.instanceColor!.needsUpdate = true;
+    });
   }
 
   /**
@@ -208,7 +299,7 @@ export class SceneView {
         col[3 * body + 2] = c.b;
       }
     });
-    if (this.mesh?.instanceColor) this.mesh.instanceColor.needsUpdate = true;
+    this.dirty = true;
   }
 
   /**
@@ -228,6 +319,10 @@ export class SceneView {
 
   render(): void {
     this.controls.update();
+    // Orbiting changes which mesh a body needs (every body gets the full one off the server's view).
+    const orbited = this.orbited();
+    if (orbited !== this.wasOrbited) (this.wasOrbited = orbited), (this.dirty = true);
+    this.commit();
     this.renderer.render(this.scene, this.camera);
   }
 }
