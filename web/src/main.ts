@@ -25,9 +25,11 @@ import {
 import { MouseGaze } from "./gaze";
 import { Overlay, fovealRadius } from "./overlay";
 import { Plots } from "./plots";
+import { FirstContacts, starGap } from "./focus";
 import { applyPoses, applyQuantisedPoses, forEachPair } from "./poses";
 import { connect, pageToken } from "./rpc";
 import { COLOURS, SceneView } from "./scene";
+import { starDims } from "./star";
 
 function el<T extends HTMLElement>(id: string): T {
   const e = document.getElementById(id);
@@ -66,7 +68,30 @@ let paused = false;
 let restart: AbortController | null = null;
 const arrivals: number[] = [];
 
-(window as unknown as { foveal: unknown }).foveal = { stats, view, gaze };
+/** A first contact the view stopped at (see "Focus on a first contact" below). */
+interface FocusedContact {
+  /** The two bodies, a < b. */
+  pair: [number, number];
+  frame: number;
+  simTimeS: number;
+  /** The truth in force ("shape", "leaf-spheres"). */
+  truth: string;
+  /** Star radius R, scene units. */
+  radius: number;
+  /** How far apart the drawn stars are at the frame's poses, scene units (<= 0: they touch). */
+  gap: number;
+  /** The two bodies' centres, world. */
+  centres: [number[], number[]];
+  /** On each star, the surface point nearest the other (where the gap is measured), world. */
+  ends: [number[], number[]];
+}
+const focus = {
+  /** Waiting for the next first contact to stop at (the F key, or `#focus` in the address). */
+  armed: new URLSearchParams(window.location.hash.slice(1)).has("focus"),
+  found: null as FocusedContact | null,
+};
+
+(window as unknown as { foveal: unknown }).foveal = { stats, view, gaze, focus };
 
 // ------------------------------------------------------------------------------------ layout
 
@@ -116,17 +141,11 @@ function onFrame(f: Frame): void {
   if (paused) return;
 
   const t0 = performance.now();
-  const matrices = view.matrices();
-  let bodies = 0;
-  if (f.quantisedPoses) bodies = applyQuantisedPoses(f.quantisedPoses, matrices);
-  else if (f.poses) bodies = applyPoses(f.poses, matrices);
-  view.posesWritten(bodies);
-  const c = f.collisions;
-  view.colour((set) => {
-    if (!c) return;
-    forEachPair(c.real, (a, b) => (set(a, COLOURS.real), set(b, COLOURS.real)));
-    forEachPair(c.deemed, (a, b) => (set(a, COLOURS.deemed), set(b, COLOURS.deemed)));
-  });
+  const bodies = show(f);
+  // The full tessellation where the viewer looks: every body reaching into the foveal region.
+  const fix = f.fixation;
+  view.setDetailRegion(fix && region ? { x: fix.x, y: fix.y, rx: region.rx, ry: region.ry } : null);
+  view.commit();
   const t1 = performance.now();
   push(stats.updateMs, t1 - t0, 300);
   if (stats.framesReceived % 10 === 0) {
@@ -167,6 +186,116 @@ function onFrame(f: Frame): void {
   }
 }
 
+/** Draw a frame's poses and collision colours; returns the bodies written. */
+function show(f: Frame): number {
+  const matrices = view.matrices();
+  let bodies = 0;
+  if (f.quantisedPoses) bodies = applyQuantisedPoses(f.quantisedPoses, matrices);
+  else if (f.poses) bodies = applyPoses(f.poses, matrices);
+  view.posesWritten(bodies);
+  const c = f.collisions;
+  view.colour((set) => {
+    if (!c) return;
+    forEachPair(c.real, (a, b) => (set(a, COLOURS.real), set(b, COLOURS.real)));
+    forEachPair(c.deemed, (a, b) => (set(a, COLOURS.deemed), set(b, COLOURS.deemed)));
+  });
+  return bodies;
+}
+
+// ------------------------------------------------------------------------ focus on a first contact
+
+// While armed, a second stream watches every frame (the page's own stream may skip frames) with
+// exact poses, and the first frame in which a pair turns green, a real collision that was not one
+// in the frame before, is shown and held: the view pauses there, framed on that pair, and the
+// page measures how far apart the two drawn stars are. The stream outlives a change of scene made
+// from the page's controls, so that the new scene's first contacts are seen from its first frame;
+// a contact in a scene the page has not loaded yet is held until it has.
+const contacts = new FirstContacts();
+let hunt: AbortController | null = null;
+let pending: { f: Frame; pair: [number, number] } | null = null;
+
+async function startHunt(): Promise<void> {
+  hunt?.abort();
+  pending = null;
+  if (!focus.armed) return;
+  const mine = new AbortController();
+  hunt = mine;
+  contacts.reset();
+  try {
+    const frames = client.watchFrames(
+      { everyK: 1, includePoses: true, quantisedPoses: false, includeCollisions: true },
+      { signal: mine.signal },
+    );
+    for await (const f of frames) {
+      if (!focus.armed) break;
+      const real: [number, number][] = [];
+      if (f.collisions) forEachPair(f.collisions.real, (a, b) => real.push([a, b]));
+      const fresh = contacts.next(Number(f.index), f.simTimeS, real);
+      if (fresh.length) {
+        pending = { f, pair: fresh[0] };
+        focusPending();
+        break;
+      }
+    }
+  } catch {
+    // A lost server: the session reports it, reconnects and starts the hunt again.
+  } finally {
+    mine.abort();
+    if (hunt === mine) hunt = null;
+  }
+}
+
+/** Show the contact found, once the page has loaded its scene (same number of bodies). */
+function focusPending(): void {
+  const p = pending;
+  if (!p || !scene || p.f.poses?.bodies !== scene.config?.bodies) return;
+  pending = null;
+  const [a, b] = p.pair;
+  const bodies = show(p.f);
+  stats.bodies = bodies;
+  lastFrame = p.f;
+  const m = view.matrices();
+  const dims = starDims(scene);
+  if (a >= bodies || b >= bodies) return;
+  const { gap, ends } = starGap(dims, { m, o: 16 * a }, { m, o: 16 * b });
+  const centre = (i: number) => [m[16 * i + 12], m[16 * i + 13], m[16 * i + 14]];
+  focus.found = {
+    pair: [a, b],
+    frame: Number(p.f.index),
+    simTimeS: p.f.simTimeS,
+    truth: truthName(scene.config?.truth),
+    radius: dims.radius,
+    gap,
+    centres: [centre(a), centre(b)],
+    ends,
+  };
+  focus.armed = false;
+  view.focusOn(a, b, m.subarray(0, 16 * bodies), dims.radius);
+  // The pair in its colour, every other body dimmed.
+  view.colour((set) => (set(a, COLOURS.real), set(b, COLOURS.real)), true);
+  setPaused(true);
+}
+
+/** What the overlay says about the pair in focus. */
+function focusLabel(c: FocusedContact): string[] {
+  const r = c.gap / c.radius;
+  return [
+    `first contact at t = ${c.simTimeS.toFixed(3)} s: bodies ${c.pair[0]} and ${c.pair[1]} (the others dimmed)`,
+    `truth ${c.truth}: a real collision; the drawn stars ` +
+      (r > 0.005 ? `are ${r.toFixed(2)}R apart` : r < -0.005 ? `touch (overlap ${(-r).toFixed(2)}R)` : "touch"),
+  ];
+}
+
+function setFocusArmed(on: boolean): void {
+  focus.armed = on;
+  if (on) {
+    focus.found = null;
+    if (paused) setPaused(false);
+    view.resetView();
+    void startHunt();
+  } else hunt?.abort();
+}
+
 function push(a: number[], v: number, keep: number): void {
   a.push(v);
   if (a.length > keep) a.shift();
@@ -196,6 +325,8 @@ async function session(): Promise<void> {
   stats.lastError = "";
   setStatus(`connected to ${window.location.host}: ${cfg?.bodies ?? 0} bodies${view.software ? " (software WebGL: every 6th frame, drawn at 10 fps)" : ""}`, "ok");
   restart = new AbortController();
+  if (pending) focusPending();
+  else if (focus.armed && !hunt) void startHunt();
   // Only the frames it can draw: with software WebGL (10 draws a second) every 6th of 60 Hz, so
   // that 10,000 bodies' poses at 60 Hz do not crowd the gaze out of the page's main thread.
   const frames = client.watchFrames(
@@ -315,18 +446,21 @@ el("schedule-model").addEventListener("change", (e) =>
 el("audit").addEventListener("change", () => configure(() => {}));
 el<HTMLInputElement>("mouse-gaze").addEventListener("change", (e) => (gaze.enabled = (e.target as HTMLInputElement).checked));
 
-function togglePause(): void {
-  paused = !paused;
+function setPaused(on: boolean): void {
+  paused = on;
   el("pause").textContent = paused ? "resume" : "pause";
 }
+const togglePause = () => setPaused(!paused);
 el("pause").addEventListener("click", togglePause);
 el("reset").addEventListener("click", () => view.resetView());
+el("focus").addEventListener("click", () => setFocusArmed(!focus.armed));
 window.addEventListener("keydown", (e) => {
   if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
   if (e.key === "p" || e.key === " ") {
     togglePause();
     e.preventDefault();
   } else if (e.key === "r") view.resetView();
+  else if (e.key === "f") setFocusArmed(!focus.armed);
 });
 
 // ------------------------------------------------------------------------------------ drawing
@@ -360,7 +494,8 @@ function drawReadout(): void {
         ].join("\n")
       : "waiting for frames…",
   );
-  el("orbit-note").hidden = !view.orbited();
+  el("orbit-note").hidden = !view.orbited() || (view.focused && paused);
+  el("focus").textContent = focus.armed ? "waiting for a first contact…" : "focus on a first contact";
 }
 
 // Drawing is paced by what it costs: where WebGL runs on the CPU (no GPU, as in headless
@@ -391,7 +526,12 @@ function animate(t: number): void {
     lastDraw = t;
     drewLastTick = true;
   }
-  overlay.draw(lastFrame?.fixation, region, gaze.enabled ? gaze.pointer : null);
+  // The close-up's label while it holds its frame; resumed, the page is an orbited view.
+  if (view.focused && paused && focus.found) {
+    const c = focus.found;
+    const ends = c.ends.map((p) => view.toScreen(p));
+    overlay.label(focusLabel(c), c.gap / c.radius > 0.005 ? ends : [ends[0]]);
+  } else overlay.draw(lastFrame?.fixation, region, gaze.enabled ? gaze.pointer : null);
   if (t - lastPlot > 100) {
     lastPlot = t;
     if (!paused) plots.redraw();

@@ -27,6 +27,29 @@ export class Overlay {
     this.canvas.height = height;
   }
 
+  /**
+   * Lines of text at the top left, in place of the fixation (a close-up is not the server's view),
+   * and marks at points given as fractions of the canvas: one point ringed, two joined.
+   */
+  label(lines: string[], marks: { x: number; y: number }[] = []): void {
+    const { ctx, canvas } = this;
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    ctx.font = "15px system-ui, sans-serif";
+    ctx.textBaseline = "top";
+    const width = Math.max(...lines.map((l) => ctx.measureText(l).width));
+    ctx.fillStyle = "rgba(16,20,24,0.75)";
+    ctx.fillRect(6, 6, width + 16, 22 * lines.length + 8);
+    ctx.fillStyle = "rgba(255,214,10,0.95)";
+    lines.forEach((l, i) => ctx.fillText(l, 14, 12 + 22 * i));
+    ctx.strokeStyle = "rgba(255,214,10,0.95)";
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    const w = canvas.width, h = canvas.height;
+    if (marks.length === 1) ctx.arc(marks[0].x * w, marks[0].y * h, 12, 0, 2 * Math.PI);
+    marks.forEach((m, i) => (i ? ctx.lineTo(m.x * w, m.y * h) : ctx.moveTo(m.x * w, m.y * h)));
+    ctx.stroke();
+  }
+
   draw(fix: Fixation | undefined, region: { rx: number; ry: number } | null, mouse: { x: number; y: number } | null): void {
     const { ctx, canvas } = this;
     const w = canvas.width, h = canvas.height;

@@ -3,21 +3,45 @@
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { SceneDescription } from "./gen/foveal/v1/foveal_pb";
-import { starDims, starGeometry } from "./star";
+import { peripheralStarGeometry, starDims, starGeometry } from "./star";
 
 /** Colours of the legend, shared with the page's CSS swatches. */
 export const COLOURS = {
   body: new THREE.Color(0x7f8ea3),
   real: new THREE.Color(0x2fbf71),
   deemed: new THREE.Color(0xff4d4d),
+  /** Every body but the pair in a close-up (see focusOn). */
+  dimmed: new THREE.Color(0x2a3038),
 } as const;
+
+/** The camera's near plane, scene units (the server's camera and orbiting). */
+const NEAR = 0.05;
 
 export class SceneView {
   readonly renderer: THREE.WebGLRenderer;
   readonly scene = new THREE.Scene();
   readonly camera: THREE.PerspectiveCamera;
   readonly controls: OrbitControls;
+  /**
+   * Two instanced meshes of the star: the full tessellation (within 0.005R of the tested star)
+   * for the bodies reaching into the foveal region, and a coarser one (within 0.035R, 56
+   * triangles instead of 192) for the rest. On a CPU rasteriser a draw's cost grows with its triangles; what the
+   * viewer looks at stays exact. Orbited or framed on a pair, every body gets the full one.
+   */
   mesh: THREE.InstancedMesh | null = null;
+  peripheral: THREE.InstancedMesh | null = null;
+  /**
+   * Where the full tessellation is drawn, in the server's screen coordinates (fractions of width
+   * and height): an ellipse about the fixation. Null: everywhere.
+   */
+  detailRegion: { x: number; y: number; rx: number; ry: number } | null = null;
+  /** Every body's pose and colour as the frame gave them, before the split between the meshes. */
+  private poses: Float32Array = new Float32Array(0);
+  private bodies = 0;
+  private radius = 0;
+  private dirty = false;
+  /** The server camera's view-projection matrix, for the split. */
+  private homeViewProjection = new THREE.Matrix4();
   /** WebGL runs on the CPU (SwiftShader, llvmpipe): no GPU, as in headless browsers. */
   readonly software: boolean;
   /** The server's camera, for reset and for telling whether the view was orbited. */
@@ -34,13 +58,13 @@ export class SceneView {
     this.software = /swiftshader|llvmpipe|software/i.test(name);
     // On the CPU, presenting the canvas costs the page's main thread far more than drawing it:
     // fewer pixels keep input (the gaze) and the frame stream responsive.
-    this.renderer.setPixelRatio(this.software ? 0.5 : Math.min(window.devicePixelRatio, 2));
+    this.sharp(false);
     this.scene.background = new THREE.Color(0x101418);
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x303040, 2.2));
     const sun = new THREE.DirectionalLight(0xffffff, 1.5);
     sun.position.set(1, 2, 3);
     this.scene.add(sun);
-    this.camera = new THREE.PerspectiveCamera(40, 1.6, 0.05, 1000);
+    this.camera = new THREE.PerspectiveCamera(40, 1.6, NEAR, 1000);
     this.controls = new OrbitControls(this.camera, canvas);
     this.controls.enableDamping = false;
   }
@@ -49,22 +73,30 @@ export class SceneView {
   load(d: SceneDescription): void {
     const cfg = d.config;
     const n = cfg?.bodies ?? 0;
-    if (this.mesh) {
-      this.scene.remove(this.mesh);
-      this.mesh.geometry.dispose();
-      this.mesh.dispose();
+    for (const old of [this.mesh, this.peripheral]) {
+      if (!old) continue;
+      this.scene.remove(old);
+      old.geometry.dispose();
+      old.dispose();
     }
     const material = new THREE.MeshLambertMaterial({ color: 0xffffff });
-    const mesh = new THREE.InstancedMesh(starGeometry(starDims(d)), material, n);
-    mesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
-    mesh.frustumCulled = false;
+    const instanced = (geometry: THREE.BufferGeometry) => {
+      const mesh = new THREE.InstancedMesh(geometry, material, n);
+      mesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
+      mesh.frustumCulled = false;
+      mesh.instanceColor = new THREE.InstancedBufferAttribute(new Float32Array(3 * n), 3);
+      mesh.instanceColor.setUsage(THREE.DynamicDrawUsage);
+      // Hidden until the first frame's poses arrive (identity matrices would stack at the origin).
+      mesh.count = 0;
+      this.scene.add(mesh);
+      return mesh;
+    };
+    this.mesh = instanced(starGeometry(starDims(d)));
+    this.peripheral = instanced(peripheralStarGeometry(starDims(d)));
+    this.radius = starDims(d).radius;
+    this.poses = new Float32Array(16 * n);
     this.colours = new Float32Array(3 * n);
-    mesh.instanceColor = new THREE.InstancedBufferAttribute(this.colours, 3);
-    mesh.instanceColor.setUsage(THREE.DynamicDrawUsage);
-    // Hidden until the first frame's poses arrive (identity matrices would stack at the origin).
-    mesh.count = 0;
-    this.mesh = mesh;
-    this.scene.add(mesh);
+    this.bodies = 0;
 
     const o = d.volumeOrigin ?? { x: 0, y: 0, z: 0 };
     const side = d.volumeSide;
@@ -88,14 +120,84 @@ export class SceneView {
     this.resetView();
   }
 
+  /**
+   * Frame two bodies close up: orbit target at their midpoint, looking across the line between
+   * their centres (so a gap between them is seen side on) from the side nearest the server's view
+   * that no other body blocks, at a distance where their bounding sphere fills the height. Bodies
+   * nearer the camera than the pair are clipped away. `centres` holds every body's centre
+   * (x, y, z, stride 16: the instance matrices); `radius` is R.
+   */
+  focusOn(a: number, b: number, centres: Float32Array, radius: number): void {
+    const at = (i: number) => new THREE.Vector3(centres[16 * i + 12], centres[16 * i + 13], centres[16 * i + 14]);
+    const pa = at(a), pb = at(b);
+    const mid = pa.clone().add(pb).multiplyScalar(0.5);
+    const line = pb.clone().sub(pa);
+    const reach = line.length() / 2 + radius; // the pair's bounding sphere about the midpoint
+    const u = line.lengthSq() > 0 ? line.normalize() : new THREE.Vector3(1, 0, 0);
+    const home = this.home.eye.clone().sub(this.home.target).normalize();
+    let side = home.clone().addScaledVector(u, -home.dot(u));
+    if (side.lengthSq() < 1e-6) side = new THREE.Vector3(0, 1, 0).cross(u);
+    if (side.lengthSq() < 1e-6) side = new THREE.Vector3(0, 0, 1);
+    side.normalize();
+    const fov = THREE.MathUtils.degToRad(this.camera.fov);
+    const distance = reach / Math.sin(fov / 2);
+    // Candidate directions about the line of centres, nearest the server's view first; the first
+    // with no other body in the cone of sight from the eye to the pair's bounding sphere wins
+    // (else the least blocked). Directions nearly along "up" are skipped (orbiting needs an up).
+    const n = centres.length / 16;
+    let best = side.clone(), fewest = Infinity;
+    for (let k = 0; k < 24 && fewest > 0; k++) {
+      const angle = (k % 2 ? -1 : 1) * Math.ceil(k / 2) * (Math.PI / 12);
+      const dir = side.clone().applyAxisAngle(u, angle);
+      if (Math.abs(dir.y) > 0.95) continue;
+      const eye = mid.clone().addScaledVector(dir, distance);
+      let blocked = 0;
+      for (let i = 0; i < n; i++) {
+        if (i === a || i === b) continue;
+        const c = at(i).sub(eye);
+        const t = -c.dot(dir) / distance; // 0 at the eye, 1 at the midpoint
+        if (t <= 0 || t >= 1) continue;
+        const off = c.addScaledVector(dir, t * distance).length();
+        if (off < radius + reach * t) blocked++;
+      }
+      if (blocked < fewest) (fewest = blocked), (best = dir);
+    }
+    this.camera.position.copy(mid).addScaledVector(best, distance);
+    this.controls.target.copy(mid);
+    this.camera.near = Math.max(0.01, distance - reach - 0.05 * radius);
+    this.camera.up.set(0, 1, 0);
+    this.camera.lookAt(mid);
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+    this.focused = true;
+    this.sharp(true);
+  }
+
+  /** A world point on the canvas, as fractions of its width and height (0, 0 top left). */
+  toScreen(p: number[]): { x: number; y: number } {
+    const v = new THREE.Vector3(p[0], p[1], p[2]).project(this.camera);
+    return { x: (v.x + 1) / 2, y: (1 - v.y) / 2 };
+  }
+
+  private wasOrbited = false;
+
+  /** Whether the view is framed on a pair (focusOn) rather than the server's or an orbited camera. */
+  focused = false;
+
   /** Back to the server's camera, the one gaze coordinates and P are measured through. */
   resetView(): void {
+    if (this.focused) this.sharp(false);
+    this.focused = false;
+    this.camera.near = NEAR;
     this.camera.position.copy(this.home.eye);
     this.controls.target.copy(this.home.target);
     this.camera.up.set(0, 1, 0);
     this.camera.lookAt(this.home.target);
     this.camera.updateProjectionMatrix();
     this.controls.update();
+    this.camera.updateMatrixWorld();
+    this.homeViewProjection.multiplyMatrices(this.camera.projectionMatrix, this.camera.matrixWorldInverse);
+    this.dirty = true;
   }
 
   /** Whether the user orbited away from the server's camera. */
@@ -108,20 +210,82 @@ export class SceneView {
 
   /** The instance matrices to write a frame's poses into. */
   matrices(): Float32Array {
-    return this.mesh ? (this.mesh.instanceMatrix.array as Float32Array) : new Float32Array(0);
+    return this.poses;
   }
 
   /** Mark `bodies` matrices as written. */
   posesWritten(bodies: number): void {
-    if (!this.mesh) return;
-    this.mesh.count = bodies;
-    this.mesh.instanceMatrix.needsUpdate = true;
+    this.bodies = bodies;
+    this.dirty = true;
   }
 
-  /** Colour every body: the plain colour, then the real and deemed pairs' bodies. */
-  colour(marks: (set: (body: number, c: THREE.Color) => void) => void): void {
+  /** Hand what changed since the last call (poses, colours, detail region) to the meshes. */
+  commit(): void {
+    if (!this.dirty) return;
+    this.split();
+    this.dirty = false;
+  }
+
+  /** Where the full tessellation is drawn (see detailRegion). */
+  setDetailRegion(r: { x: number; y: number; rx: number; ry: number } | null): void {
+    const o = this.detailRegion;
+    if (o === r || (o && r && o.x === r.x && o.y === r.y && o.rx === r.rx && o.ry === r.ry)) return;
+    this.detailRegion = r;
+    this.dirty = true;
+  }
+
+  /**
+   * Copy each body's pose and colour into the mesh it is drawn with: the full one when it reaches
+   * into the detail region as the server's camera sees it (its centre within the region widened
+   * by the body's bounding radius on screen), the peripheral one otherwise.
+   */
+  private split(): void {
+    const fine = this.mesh, coarse = this.peripheral;
+    if (!fine?.instanceColor || !coarse?.instanceColor) return;
+    const m = this.poses, col = this.colours, e = this.homeViewProjection.elements;
+    const region = this.orbited() ? null : this.detailRegion;
+    const out = [fine, coarse].map((mesh) => ({
+      m: mesh.instanceMatrix.array as Float32Array,
+      c: mesh.instanceColor!.array as Float32Array,
+      n: 0,
+    }));
+    for (let i = 0; i < this.bodies; i++) {
+      const o = 16 * i;
+      let near = true;
+      if (region) {
+        const x = m[o + 12], y = m[o + 13], z = m[o + 14];
+        const w = e[3] * x + e[7] * y + e[11] * z + e[15];
+        if (w <= 0) near = false;
+        else {
+          const dx = ((e[0] * x + e[4] * y + e[8] * z + e[12]) / w + 1) / 2 - region.x;
+          const dy = (1 - (e[1] * x + e[5] * y + e[9] * z + e[13]) / w) / 2 - region.y;
+          // R on screen, as fractions of width and height (half the projection's scale at depth w).
+          const rx = region.rx + (e[0] * this.radius) / (2 * w), ry = region.ry + (e[5] * this.radius) / (2 * w);
+          near = (dx / rx) ** 2 + (dy / ry) ** 2 <= 1;
+        }
+      }
+      const t = out[near ? 0 : 1];
+      const to = 16 * t.n;
+      for (let k = 0; k < 16; k++) t.m[to + k] = m[o + k];
+      t.c[3 * t.n] = col[3 * i];
+      t.c[3 * t.n + 1] = col[3 * i + 1];
+      t.c[3 * t.n + 2] = col[3 * i + 2];
+      t.n++;
+    }
+    [fine, coarse].forEach((mesh, k) => {
+      mesh.count = out[k].n;
+      mesh.instanceMatrix.needsUpdate = true;
+      mesh.instanceColor!.needsUpdate = true;
+    });
+  }
+
+  /**
+   * Colour every body: the plain colour (or COLOURS.dimmed with `dimmed`), then the real and
+   * deemed pairs' bodies.
+   */
+  colour(marks: (set: (body: number, c: THREE.Color) => void) => void, dimmed = false): void {
     const col = this.colours;
-    const { r, g, b } = COLOURS.body;
+    const { r, g, b } = dimmed ? COLOURS.dimmed : COLOURS.body;
     for (let i = 0; i < col.length; i += 3) {
       col[i] = r;
       col[i + 1] = g;
@@ -135,7 +299,17 @@ export class SceneView {
         col[3 * body + 2] = c.b;
       }
     });
-    if (this.mesh?.instanceColor) this.mesh.instanceColor.needsUpdate = true;
+    this.dirty = true;
+  }
+
+  /**
+   * Draw at the display's full resolution even on a CPU rasteriser, for a close-up (a held frame:
+   * the page's input and frame stream matter less there than a picture sharp enough to judge a
+   * gap by), or back to the usual resolution.
+   */
+  sharp(on: boolean): void {
+    const full = Math.min(window.devicePixelRatio, 2);
+    this.renderer.setPixelRatio(on || !this.software ? full : 0.5);
   }
 
   /** Fit the drawing buffer to the canvas's CSS size. */
@@ -145,6 +319,10 @@ export class SceneView {
 
   render(): void {
     this.controls.update();
+    // Orbiting changes which mesh a body needs (every body gets the full one off the server's view).
+    const orbited = this.orbited();
+    if (orbited !== this.wasOrbited) (this.wasOrbited = orbited), (this.dirty = true);
+    this.commit();
     this.renderer.render(this.scene, this.camera);
   }
 }

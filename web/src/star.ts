@@ -35,7 +35,8 @@ export const SPIKE_BASE_FRACTION = 0.25;
  *   Inscribed in the exact circle of radius r it is at most r(1 - cos(pi/n)) inside it (n = 12:
  *   0.034r); with its vertices at radius 2r/(1 + cos(pi/n)) it is within
  *   r(1 - cos(pi/n))/(1 + cos(pi/n)) = 0.0173r of it, at most 0.0043R at the base.
- * So the drawn star is within 0.0043R of the tested one (the 20-face core and 6-sided cones drawn
+ * So the drawn star is within 0.0043R of the tested one where the viewer looks (bodies away from
+ * the fixation are drawn coarser, see PERIPHERAL_SPHERE_DETAIL) (the 20-face core and 6-sided cones drawn
  * before were up to 0.062R and 0.033R inside it). Leaving out the core's faces hidden inside the
  * spikes (visibleCore), a body costs 120 + 6 * 12 = 192 triangles instead of 56; on a CPU
  * rasteriser (SwiftShader) a draw of 10,000 bodies takes about twice as long as before, with a GPU
@@ -137,6 +138,23 @@ function visibleCore(s: StarDims, detail: number, inner: number): THREE.BufferGe
 /** One geometry for the instanced mesh: the parts merged once. */
 export function starGeometry(s: StarDims): THREE.BufferGeometry {
   const merged = mergeGeometries(starParts(s));
+  if (!merged) throw new Error("star geometry: parts do not merge");
+  return merged;
+}
+
+/**
+ * Tessellation of the bodies drawn away from the fixation (see SceneView): the icosahedron itself
+ * for the core and six-sided spikes, straddling their surfaces as above, within
+ * r(1 - c)/(1 + c) = 0.114r = 0.034R of the core (c = 0.795 for the icosahedron's faces) and
+ * 0.072b = 0.018R of a spike: about a third of the triangles of the full tessellation.
+ */
+export const PERIPHERAL_SPHERE_DETAIL = 0;
+/** Radial segments of each spike away from the fixation. */
+export const PERIPHERAL_CONE_SEGMENTS = 6;
+
+/** The star as drawn away from the fixation: the coarser tessellation, merged. */
+export function peripheralStarGeometry(s: StarDims): THREE.BufferGeometry {
+  const merged = mergeGeometries(starParts(s, PERIPHERAL_SPHERE_DETAIL, PERIPHERAL_CONE_SEGMENTS));
   if (!merged) throw new Error("star geometry: parts do not merge");
   return merged;
 }

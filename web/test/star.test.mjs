@@ -152,6 +152,15 @@ describe("the drawn star", () => {
     assert.ok(Math.max(-cone.lo, cone.hi) > star.MAX_DEVIATION, JSON.stringify(cone));
   });
 
+  test("the tessellation away from the fixation is within 0.035R of the exact star", () => {
+    const dims = { radius: 1, coreRadius: 0.3, spikeBaseRadius: 0.25 };
+    const [core, spike] = star.starParts(dims, star.PERIPHERAL_SPHERE_DETAIL, star.PERIPHERAL_CONE_SEGMENTS);
+    const ball = deviation(core, (p) => dims.coreRadius - norm(p));
+    const cone = deviation(spike, (q) => dims.spikeBaseRadius * (1 - q[0]) - Math.hypot(q[1], q[2]));
+    for (const d of [ball, cone]) assert.ok(Math.max(-d.lo, d.hi) <= 0.035, JSON.stringify(d));
+    console.log(`# away from the fixation: ${star.triangles(star.peripheralStarGeometry(dims))} triangles; core ${JSON.stringify(ball)}, spike ${JSON.stringify(cone)}`);
+  });
+
   test("takes its dimensions from GetScene, or the canonical fractions from an older server", () => {
     const sent = { radius: 0.4, coreRadius: 0.1, spikeBaseRadius: 0.05 };
     assert.deepEqual(star.starDims({ config: { shapeRadius: 0.4 }, star: sent }), sent);
