@@ -65,7 +65,7 @@ mod web;
 pub use auth::{MIN_TOKEN_LEN, Role, TokenError, Tokens};
 pub use config::{Security, ServerConfig, TlsIdentity};
 pub use error::ServerError;
-pub use gaze::MAX_BATCH_SAMPLES;
+pub use gaze::{MAX_BATCH_SAMPLES, MAX_SOURCE_BYTES};
 pub use limits::{
     Limits, MAX_DENSITY, MAX_GAZE_STREAMS, MAX_HEALTH_WATCHES, MAX_HEALTH_WATCHES_PER_CONNECTION,
     MAX_REQUEST_BYTES, MAX_SUBSCRIBERS, MIN_DENSITY,

@@ -230,7 +230,8 @@ pub struct PushLimiters {
 }
 
 impl PushLimiters {
-    /// How many of `n` samples from `peer` fit under `rate_hz` at `now` (the first ones do).
+    /// How many of `n` samples from `peer` fit under `rate_hz` at `now` (the caller keeps the
+    /// newest that many).
     pub fn admit(&self, peer: Option<SocketAddr>, n: usize, rate_hz: f64, now: Instant) -> usize {
         let mut buckets = self.buckets.lock().unwrap_or_else(PoisonError::into_inner);
         if buckets.len() > 4096 {
