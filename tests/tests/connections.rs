@@ -119,6 +119,35 @@ async fn silent_connections_half_heads_and_idle_keep_alive_are_closed() {
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn an_http2_connection_without_calls_is_closed_after_the_idle_timeout() {
+    let server = TestServer::start(quick(small_config(50, 30.0))).await;
+    let _ = server.client().await;
+    let tcp = TcpStream::connect(server.addr).await.expect("connect");
+    let (mut send, conn) = hyper::client::conn::http2::handshake(
+        hyper_util::rt::TokioExecutor::new(),
+        hyper_util::rt::TokioIo::new(tcp),
+    )
+    .await
+    .expect("HTTP/2 handshake");
+    let conn = tokio::spawn(conn);
+    let page = hyper::Request::get(format!("http://{}/", server.addr))
+        .body(String::new())
+        .expect("request");
+    let response = send.send_request(page).await.expect("GET / over HTTP/2");
+    assert_eq!(response.status(), 200);
+    drop(response);
+    // The client keeps the connection (and would answer keepalive pings) but calls nothing.
+    let t0 = Instant::now();
+    let ended = within("the server to close the idle connection", conn).await;
+    println!(
+        "idle HTTP/2 connection closed after {:?}: {ended:?}",
+        t0.elapsed()
+    );
+    drop(send);
+    server.stop().await.expect("clean stop");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_request_body_that_stops_fails_the_call_naming_the_limit() {
     let server = TestServer::start(quick(small_config(50, 30.0))).await;
     let _ = server.client().await;
