@@ -134,12 +134,13 @@ pub fn normalise_addr(addr: &str) -> String {
 }
 
 /// How to reach a server beyond its address: the bearer token its roles need and, for a server
-/// behind TLS (`https://`), the CA certificate (PEM) that signed its certificate.
+/// behind TLS (`https://`) whose certificate no system root signed, the CA certificate (PEM) that did.
 #[derive(Clone, Default)]
 pub struct ConnectOptions {
     /// Sent as `authorization: Bearer <token>` on every call.
     pub token: Option<String>,
-    /// The CA certificate to trust, PEM; needed for `https://` addresses.
+    /// The CA certificate to trust, PEM, for `https://` addresses (the only one trusted then);
+    /// without it the system's trusted roots are.
     pub ca_pem: Option<Vec<u8>>,
 }
 
@@ -193,10 +194,12 @@ pub type Connection = InterceptedService<Channel, Credentials>;
 /// The foveal client every part of this library uses.
 pub type Client = FovealClient<Connection>;
 
-/// `endpoint` with TLS set up when `addr` is `https://`.
+/// `endpoint` with TLS set up when `addr` is `https://`: trusting only the CA of
+/// [`ConnectOptions::ca_pem`] when one is given (a deployment with its own CA), the system's
+/// trusted roots otherwise (a server with a certificate from a public CA, as a browser would).
 ///
 /// # Errors
-/// [`ClientError::InvalidOption`] for `https://` without a CA, or a CA that is not PEM.
+/// [`ClientError::InvalidOption`] for a CA that is not PEM, or system roots that cannot be read.
 pub fn secure(
     addr: &str,
     endpoint: Endpoint,
@@ -205,19 +208,21 @@ pub fn secure(
     if !normalise_addr(addr).starts_with("https://") {
         return Ok(endpoint);
     }
-    let Some(ca) = &options.ca_pem else {
-        return Err(ClientError::InvalidOption {
-            name: "ca",
-            reason: format!(
-                "{addr} is https: give the CA certificate that signed the server's certificate (--ca PATH or FOVEAL_CA)"
-            ),
-        });
+    let (tls, what) = match &options.ca_pem {
+        Some(ca) => (
+            ClientTlsConfig::new().ca_certificate(Certificate::from_pem(ca)),
+            "not a usable PEM CA certificate",
+        ),
+        None => (
+            ClientTlsConfig::new().with_native_roots(),
+            "the system's trusted certificates could not be loaded; give the server's CA with --ca PATH (or FOVEAL_CA)",
+        ),
     };
     endpoint
-        .tls_config(ClientTlsConfig::new().ca_certificate(Certificate::from_pem(ca)))
+        .tls_config(tls)
         .map_err(|e| ClientError::InvalidOption {
             name: "ca",
-            reason: format!("not a usable PEM CA certificate: {e}"),
+            reason: format!("{what}: {e}"),
         })
 }
 
@@ -266,6 +271,25 @@ pub async fn connect_with(addr: &str, options: &ConnectOptions) -> Result<Client
     Ok(FovealClient::with_interceptor(channel, credentials)
         .max_decoding_message_size(MAX_MESSAGE_BYTES)
         .max_encoding_message_size(MAX_MESSAGE_BYTES))
+}
+
+#[cfg(test)]
+mod tls_tests {
+    use super::*;
+
+    #[test]
+    fn https_without_a_ca_trusts_the_system_roots() {
+        let addr = "https://foveal.example.org:50051";
+        let e = endpoint(addr, Duration::from_secs(1)).expect("an address");
+        let options = ConnectOptions {
+            token: None,
+            ca_pem: None,
+        };
+        assert!(
+            secure(addr, e, &options).is_ok(),
+            "an https address needs no --ca"
+        );
+    }
 }
 
 #[cfg(test)]

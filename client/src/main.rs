@@ -154,7 +154,7 @@ struct ServerArgs {
     /// Prefer the environment variable: a flag's value is visible in the process list.
     #[arg(long, global = true, env = "FOVEAL_TOKEN", hide_env_values = true)]
     token: Option<String>,
-    /// CA certificate (PEM) to trust for an `https://` server.
+    /// CA certificate (PEM) to trust for an `https://` server, instead of the system's roots.
     #[arg(long, global = true, env = "FOVEAL_CA")]
     ca: Option<PathBuf>,
 }

@@ -49,6 +49,23 @@ impl Role {
         self == Self::Admin || self == needed
     }
 
+    /// "a `viewer` (or `admin`) token", "an `admin` token": what a method needing this role
+    /// asks for in a message.
+    pub fn token_phrase(self) -> String {
+        match self {
+            Self::Admin => "an `admin` token".into(),
+            r => format!("a `{r}` (or `admin`) token"),
+        }
+    }
+
+    /// "the `gaze` role (or `admin`)", "the `admin` role".
+    pub fn role_phrase(self) -> String {
+        match self {
+            Self::Admin => "the `admin` role".into(),
+            r => format!("the `{r}` role (or `admin`)"),
+        }
+    }
+
     /// The environment variable a token of this role is read from.
     pub fn env_var(self) -> &'static str {
         match self {
@@ -165,12 +182,11 @@ impl Tokens {
                     line: i + 1,
                     reason: "expected `role token` or `role=token`".into(),
                 })?;
+            // The word is never quoted: a line written backwards (`<token> admin`) has the
+            // token there, and start-up errors end up in logs.
             let role = Role::from_name(role.trim()).ok_or_else(|| TokenError::Line {
                 line: i + 1,
-                reason: format!(
-                    "unknown role `{}`; one of: viewer, gaze, admin",
-                    role.trim()
-                ),
+                reason: "the first word is not a role (viewer, gaze or admin); write `role token` (the word is not shown: it may be a token)".into(),
             })?;
             tokens.add(role, token.trim(), &format!("line {}", i + 1))?;
         }
@@ -261,7 +277,8 @@ pub fn authorize(
     let method = path.rsplit('/').next().unwrap_or(path);
     let Some(header) = authorization else {
         return Err(tonic::Status::unauthenticated(format!(
-            "{method} needs a `{needed}` (or `admin`) token: send metadata `authorization: Bearer <token>` (foveal: --token or FOVEAL_TOKEN)"
+            "{method} needs {}: send metadata `authorization: Bearer <token>` (foveal: --token or FOVEAL_TOKEN)",
+            needed.token_phrase()
         )));
     };
     let presented = std::str::from_utf8(header)
@@ -282,7 +299,8 @@ pub fn authorize(
         )),
         Some(role) if role.allows(needed) => Ok(Caller { role: Some(role) }),
         Some(role) => Err(tonic::Status::permission_denied(format!(
-            "{method} needs the `{needed}` role (or `admin`); this token has the `{role}` role"
+            "{method} needs {}; this token has the `{role}` role",
+            needed.role_phrase()
         ))),
     }
 }
@@ -345,6 +363,27 @@ mod tests {
                 .map(|c| c.role),
             Some(Some(Role::Admin))
         );
+        // Messages read as English for every role.
+        let m = |r: Result<Caller, tonic::Status>| {
+            r.err().map(|s| s.message().to_owned()).unwrap_or_default()
+        };
+        let configure = m(call("/foveal.v1.Foveal/Configure", None));
+        assert!(
+            configure.contains("Configure needs an `admin` token:"),
+            "{configure}"
+        );
+        let watch = m(call("/foveal.v1.Foveal/WatchFrames", None));
+        assert!(
+            watch.contains("needs a `viewer` (or `admin`) token"),
+            "{watch}"
+        );
+        let denied = m(call("/foveal.v1.Foveal/Configure", Some(V)));
+        assert!(denied.contains("needs the `admin` role;"), "{denied}");
+        let denied = m(call("/foveal.v1.Foveal/PushGaze", Some(V)));
+        assert!(
+            denied.contains("needs the `gaze` role (or `admin`);"),
+            "{denied}"
+        );
         // Authentication off: everything open.
         assert_eq!(
             code(authorize(
@@ -363,6 +402,17 @@ mod tests {
         let e = Tokens::parse("\nroot 0123456789abcdef0123").expect_err("role");
         assert!(e.to_string().contains("line 2"), "{e}");
         assert!(Tokens::parse("viewer").is_err());
+        // A line written backwards: the error must not carry the token.
+        let secret = "0123456789abcdef-very-secret";
+        for line in [format!("{secret} admin"), format!("{secret}=admin")] {
+            let e = Tokens::parse(&line).expect_err("backwards");
+            let text = e.to_string();
+            assert!(
+                text.contains("line 1") && text.contains("role token"),
+                "{text}"
+            );
+            assert!(!text.contains("0123456789abcdef"), "{text}");
+        }
         assert!(
             !format!("{:?}", tokens()).contains(V),
             "secrets stay out of Debug"

@@ -20,6 +20,8 @@ use crate::auth::{Role, Tokens};
 use crate::config::{Security, ServerConfig, TlsIdentity};
 use crate::error::ServerError;
 use crate::limits::{self, Limits};
+use crate::origin::AllowedOrigin;
+use crate::transport::{self, ConnectionLimits};
 
 /// Bodies of the scene the server starts with. With [`DEFAULT_BUDGET`] the point of foveal shows at
 /// once: about a third of the candidate pairs are deemed each frame, so P is visible and moves with
@@ -167,6 +169,31 @@ pub struct Cli {
     /// TLS private key (PEM).
     #[arg(long, env = "FOVEAL_TLS_KEY", requires = "tls_cert")]
     pub tls_key: Option<PathBuf>,
+    /// Add an origin browsers may use the viewer and grpc-web from (`https://viewer.example.org`,
+    /// `http://lab-pc.local:50051`; repeat, or comma-separated in the variable). Its host is then
+    /// also accepted in `Host`. Without it browsers are answered only at IP addresses and
+    /// `localhost`, from the server's own or a loopback origin (DNS rebinding protection).
+    #[arg(long, env = "FOVEAL_ALLOWED_ORIGINS", value_delimiter = ',')]
+    pub allowed_origin: Vec<AllowedOrigin>,
+    /// Connections held at once; one more is closed at once [default: 1024, or fewer when
+    /// `ulimit -n` leaves less room than that plus 64].
+    #[arg(long, env = "FOVEAL_MAX_CONNECTIONS")]
+    pub max_connections: Option<usize>,
+    /// Seconds a new connection has to send its first byte (TLS: to finish its handshake and
+    /// send it); a connection that sends nothing is closed.
+    #[arg(long, env = "FOVEAL_FIRST_BYTE_TIMEOUT", default_value_t = transport::DEFAULT_FIRST_BYTE_TIMEOUT.as_secs_f64())]
+    pub first_byte_timeout: f64,
+    /// Seconds a request head has to arrive once its first byte has (every HTTP/1.1 head, also
+    /// between keep-alive requests; on HTTP/2 the first request's).
+    #[arg(long, env = "FOVEAL_HEADER_TIMEOUT", default_value_t = transport::DEFAULT_HEADER_TIMEOUT.as_secs_f64())]
+    pub header_timeout: f64,
+    /// Seconds a request body may send nothing before its call fails with DEADLINE_EXCEEDED
+    /// (StreamGaze over HTTP/2 excepted: a tracker may pause).
+    #[arg(long, env = "FOVEAL_BODY_IDLE_TIMEOUT", default_value_t = transport::DEFAULT_BODY_IDLE_TIMEOUT.as_secs_f64())]
+    pub body_idle_timeout: f64,
+    /// Seconds a connection may stay open with no call in progress.
+    #[arg(long, env = "FOVEAL_IDLE_TIMEOUT", default_value_t = transport::DEFAULT_IDLE_TIMEOUT.as_secs_f64())]
+    pub idle_timeout: f64,
     /// Refuse scenes (at start-up and in Configure) whose expected broad-phase candidate pairs
     /// per frame exceed this.
     #[arg(long, env = "FOVEAL_MAX_CANDIDATE_PAIRS", default_value_t = limits::DEFAULT_MAX_CANDIDATE_PAIRS)]
@@ -339,6 +366,13 @@ impl Cli {
             });
         }
         let gaze_processing = self.gaze_processing(&sim.display);
+        let connections = ConnectionLimits {
+            max_connections: self.max_connections,
+            first_byte_timeout: seconds("first_byte_timeout", self.first_byte_timeout)?,
+            header_timeout: seconds("header_timeout", self.header_timeout)?,
+            body_idle_timeout: seconds("body_idle_timeout", self.body_idle_timeout)?,
+            idle_timeout: seconds("idle_timeout", self.idle_timeout)?,
+        };
         let config = ServerConfig {
             sim,
             frame_rate_hz: self.frame_rate,
@@ -350,6 +384,7 @@ impl Cli {
                 max_gaze_rate_hz: self.max_gaze_rate,
             },
             record: self.record.clone(),
+            connections,
             ..ServerConfig::default()
         };
         config.validate()?;
@@ -393,6 +428,23 @@ impl Cli {
             tokens,
             tls,
             insecure: self.insecure,
+            allowed_origins: self.allowed_origin.clone(),
+        })
+    }
+}
+
+/// A timeout flag in seconds as a duration: finite, > 0 and at most [`transport::MAX_TIMEOUT`].
+fn seconds(field: &'static str, s: f64) -> Result<Duration, ConfigError> {
+    if s.is_finite() && s > 0.0 && s <= transport::MAX_TIMEOUT.as_secs_f64() {
+        Ok(Duration::from_secs_f64(s))
+    } else {
+        Err(ConfigError {
+            field,
+            value: s.to_string(),
+            expected: format!(
+                "must be finite, > 0 and <= {} (seconds)",
+                transport::MAX_TIMEOUT.as_secs()
+            ),
         })
     }
 }

@@ -10,6 +10,8 @@ use foveal_engine::{ConfigError, SimConfig};
 
 use crate::auth::Tokens;
 use crate::limits::Limits;
+use crate::origin::AllowedOrigin;
+use crate::transport::ConnectionLimits;
 
 /// Slowest frame rate accepted (frames per second): below this a "frame loop" is a batch job.
 pub const MIN_FRAME_RATE_HZ: f64 = 1.0;
@@ -43,6 +45,8 @@ pub struct ServerConfig {
     pub security: Security,
     /// Limits protecting the loop (scene cost, gaze rate).
     pub limits: Limits,
+    /// How many connections the server holds and for how long (timeouts).
+    pub connections: ConnectionLimits,
     /// Write the session (configuration, every gaze sample the processing received, every
     /// frame's fixation and report, scene changes) to this file (`foveal-session` format).
     pub record: Option<std::path::PathBuf>,
@@ -81,6 +85,9 @@ pub struct Security {
     pub tls: Option<TlsIdentity>,
     /// Serve without tokens on a non-loopback address (`--insecure`).
     pub insecure: bool,
+    /// Origins browsers may call from besides loopback ones and the server's own address
+    /// (`--allowed-origin`); their host names are also accepted in `Host`.
+    pub allowed_origins: Vec<AllowedOrigin>,
 }
 
 impl Default for ServerConfig {
@@ -95,6 +102,7 @@ impl Default for ServerConfig {
             gaze_processing: foveal_gaze::online::ProcessorConfig::default(),
             security: Security::default(),
             limits: Limits::default(),
+            connections: ConnectionLimits::default(),
             stall_periods: DEFAULT_STALL_PERIODS,
             record: None,
         }
@@ -143,6 +151,7 @@ impl ServerConfig {
             });
         }
         self.limits.validate()?;
+        self.connections.validate()?;
         self.sim.validate()?;
         self.limits.check(&self.sim).map(|_| ())
     }

@@ -368,9 +368,10 @@ pub fn merge_masked(
                 c.display.viewing_distance_cm = display.viewing_distance_cm;
             }
             other => {
+                // The client's string, bounded: it goes into the log line and the status.
                 return Err(invalid(
                     "update_mask",
-                    other,
+                    crate::limits::excerpt(other, 64),
                     "must list SceneConfig field names (e.g. `bodies`, `audit`, `display.width_px`)",
                 ));
             }
@@ -657,6 +658,13 @@ mod tests {
         assert_eq!(e.field, "budget");
         let e = merge_masked(&c, 60.0, &req, &paths(&["colour"])).expect_err("unknown path");
         assert_eq!(e.field, "update_mask");
+        let long = "x".repeat(1 << 20);
+        let e = merge_masked(&c, 60.0, &req, &paths(&[long.as_str()])).expect_err("unknown path");
+        assert!(
+            e.value.len() < 100,
+            "a client's path is quoted bounded: {} bytes",
+            e.value.len()
+        );
     }
 
     #[test]

@@ -52,6 +52,9 @@ pub enum ServerError {
         /// What is wrong with it.
         reason: String,
     },
+    /// The TLS certificate and key could not be made into a TLS configuration.
+    #[error("TLS: {0}")]
+    TlsConfig(String),
     /// `--record FILE` could not be created or could not take the session header.
     #[error("--record {path}: cannot record the session there: {source}")]
     Record {

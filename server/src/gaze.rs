@@ -15,6 +15,9 @@ use foveal_proto::pb;
 /// Largest PushGaze batch (samples). A 1 kHz tracker produces this in 10 s; anything larger is a
 /// client that should be streaming, and it keeps one call's decoding and locking bounded.
 pub const MAX_BATCH_SAMPLES: usize = 10_000;
+/// Longest `PushGazeRequest.source` (bytes of UTF-8): a name for logs, the status and a
+/// recorded session, which copy it with every sample.
+pub const MAX_SOURCE_BYTES: usize = 64;
 /// How many rejections a response lists; the counts stay exact past it.
 pub const MAX_LISTED_REJECTIONS: usize = 32;
 
@@ -155,6 +158,25 @@ pub fn check_batch_size(len: usize) -> Result<(), String> {
     }
 }
 
+/// Check a PushGaze `source` before anything of its batch is used: at most
+/// [`MAX_SOURCE_BYTES`] bytes of printable text (a name is logged, kept per source and written
+/// with every recorded sample, so an unbounded one would be copied a thousand times a batch).
+/// The message names the field and the limit, and never quotes the string.
+pub fn check_source(source: &str) -> Result<(), String> {
+    if source.len() > MAX_SOURCE_BYTES {
+        return Err(format!(
+            "`source` is {} bytes long, more than the limit of {MAX_SOURCE_BYTES}: send a short printable name of the sender (e.g. \"eyelink-bridge\")",
+            source.len()
+        ));
+    }
+    if let Some((at, _)) = source.char_indices().find(|(_, c)| c.is_control()) {
+        return Err(format!(
+            "`source` has a control character at byte {at}: send at most {MAX_SOURCE_BYTES} bytes of printable text"
+        ));
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -237,6 +259,23 @@ mod tests {
         let sum = v.into_push_response();
         assert_eq!(sum.rejected, 100);
         assert_eq!(sum.rejections.len(), MAX_LISTED_REJECTIONS);
+    }
+
+    #[test]
+    fn sources_are_short_printable_names() {
+        assert!(check_source("").is_ok());
+        assert!(check_source("viewer:mouse").is_ok());
+        assert!(check_source("Blickverfolgung-äöü").is_ok());
+        assert!(check_source(&"x".repeat(MAX_SOURCE_BYTES)).is_ok());
+        let e = check_source(&"x".repeat(256 << 10)).expect_err("long");
+        assert!(
+            e.contains("`source`") && e.contains("64") && e.contains("262144"),
+            "{e}"
+        );
+        assert!(!e.contains("xxxx"), "the string is not quoted: {e}");
+        let e = check_source("a\nb").expect_err("control");
+        assert!(e.contains("`source`") && e.contains("byte 1"), "{e}");
+        assert!(check_source("\u{1b}[31mred").is_err());
     }
 
     #[test]

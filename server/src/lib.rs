@@ -21,7 +21,10 @@
 //!   Configure's merge rule.
 //! - [`state`], [`metrics`], [`summary`], [`shutdown`]: shared state, counters, the per-second
 //!   summary line, the shutdown signal.
-//! - [`web`]: the browser viewer on the gRPC port: grpc-web and the embedded page.
+//! - [`web`]: the browser viewer on the gRPC port: grpc-web and the embedded page; `origin`: the
+//!   `Host` and `Origin` allow-list browsers' requests pass (DNS rebinding).
+//! - `transport`: the listener and the connections on hyper: the connection limit, accept
+//!   back-off, timeouts (first byte, request head, idle body, idle connection), TLS with ALPN.
 //!
 //! Data flow: gaze → [`gaze`] → [`fixation_cell`] → [`frame_loop`] (engine step) → [`fanout`] →
 //! subscribers. Protocol semantics are documented in `docs/PROTOCOL.md`.
@@ -34,9 +37,6 @@ use std::time::Duration;
 use foveal_engine::Simulation;
 use foveal_proto::pb::foveal_server::FovealServer;
 use tokio::net::TcpListener;
-use tokio_stream::StreamExt;
-use tokio_stream::wrappers::TcpListenerStream;
-use tonic::transport::{Identity, ServerTlsConfig};
 
 mod auth;
 pub mod cli;
@@ -51,22 +51,27 @@ mod gate;
 mod gaze;
 mod limits;
 mod metrics;
+mod origin;
 mod recorder;
 mod service;
 mod shutdown;
 mod state;
 mod summary;
 pub mod telemetry;
+mod transport;
 mod watchdog;
 mod web;
 
 pub use auth::{MIN_TOKEN_LEN, Role, TokenError, Tokens};
 pub use config::{Security, ServerConfig, TlsIdentity};
 pub use error::ServerError;
-pub use gaze::MAX_BATCH_SAMPLES;
+pub use gaze::{MAX_BATCH_SAMPLES, MAX_SOURCE_BYTES};
 pub use limits::{
-    Limits, MAX_DENSITY, MAX_GAZE_STREAMS, MAX_REQUEST_BYTES, MAX_SUBSCRIBERS, MIN_DENSITY,
+    Limits, MAX_DENSITY, MAX_GAZE_STREAMS, MAX_HEALTH_WATCHES, MAX_HEALTH_WATCHES_PER_CONNECTION,
+    MAX_REQUEST_BYTES, MAX_SUBSCRIBERS, MIN_DENSITY,
 };
+pub use origin::AllowedOrigin;
+pub use transport::ConnectionLimits;
 
 use frame_loop::FrameLoop;
 use gate::{GateLayer, GateState};
@@ -75,10 +80,6 @@ use state::{Scene, Shared};
 
 /// The foveal service's name in the health registry.
 const FOVEAL_SERVICE_NAME: &str = "foveal.v1.Foveal";
-
-/// After open calls have finished at shutdown, how long responses already written get to leave
-/// before the connections still open (a subscriber that stopped reading) are abandoned.
-const SHUTDOWN_LINGER: Duration = Duration::from_millis(250);
 
 /// Refuse to serve an address other than loopback without tokens, unless told to.
 fn check_exposure(addr: Option<SocketAddr>, security: &Security) -> Result<(), ServerError> {
@@ -170,48 +171,50 @@ pub async fn run(
     if config.security.tokens.is_empty() && config.security.insecure {
         tracing::warn!(%addr, "serving without tokens on a non-loopback address (--insecure)");
     }
-    // Frames are small writes that must leave at once: no Nagle delay on accepted connections.
-    let incoming = TcpListenerStream::new(listener).map(|conn| {
-        conn.inspect(|stream| {
-            if let Err(e) = stream.set_nodelay(true) {
-                tracing::debug!(error = %e, "could not set TCP_NODELAY");
-            }
-        })
-    });
-    let mut builder = tonic::transport::Server::builder()
-        .http2_keepalive_interval(Some(limits::KEEPALIVE_INTERVAL))
-        .http2_keepalive_timeout(Some(limits::KEEPALIVE_TIMEOUT))
-        .max_concurrent_streams(limits::MAX_STREAMS_PER_CONNECTION)
-        .concurrency_limit_per_connection(limits::MAX_CALLS_PER_CONNECTION)
-        .load_shed(true);
-    if let Some(tls) = &config.security.tls {
-        builder = builder.tls_config(
-            ServerTlsConfig::new().identity(Identity::from_pem(&tls.cert_pem, &tls.key_pem)),
-        )?;
-    }
+    let tls = match &config.security.tls {
+        Some(identity) => Some(transport::tls_acceptor(identity)?),
+        None => None,
+    };
     let foveal = FovealServer::new(service).max_decoding_message_size(limits::MAX_REQUEST_BYTES);
-    let (drained_tx, drained_rx) = tokio::sync::oneshot::channel::<()>();
-    // HTTP/1.1, grpc-web and the embedded page: the browser viewer on this port (see `web`). The
-    // viewer layer is outermost, so the gate sees grpc-web calls as gRPC and its refusals reach a
-    // browser as grpc-web errors.
-    let server = builder
-        .accept_http1(true)
-        .layer(web::ViewerLayer)
-        .layer(GateLayer(Arc::clone(&gate)))
-        .add_service(health_service)
+    let routes = tonic::service::Routes::new(health_service)
         .add_service(reflection_v1)
         .add_service(reflection_v1alpha)
         .add_service(foveal)
-        // New connections keep being accepted while open calls drain, so that they are answered
-        // UNAVAILABLE by the gate instead of waiting in the listen backlog.
-        .serve_with_incoming_shutdown(incoming, async move {
+        .prepare();
+    // HTTP/1.1, grpc-web and the embedded page: the browser viewer on this port (see `web`). The
+    // viewer layer is outermost, so the gate sees grpc-web calls as gRPC and its refusals reach a
+    // browser as grpc-web errors.
+    let service = tower::ServiceBuilder::new()
+        .map_err(
+            |e: std::convert::Infallible| -> Box<dyn std::error::Error + Send + Sync> {
+                match e {}
+            },
+        )
+        .layer(web::ViewerLayer::new(origin::Origins::new(
+            config.security.allowed_origins.clone(),
+        )))
+        .layer(GateLayer(Arc::clone(&gate)))
+        .service(routes);
+    let (drained_tx, drained_rx) = tokio::sync::oneshot::channel::<()>();
+    // New connections keep being accepted while open calls drain, so that they are answered
+    // UNAVAILABLE by the gate instead of waiting in the listen backlog.
+    let server = transport::serve(
+        listener,
+        service,
+        transport::Settings {
+            limits: config.connections,
+            tls,
+            shutdown: stop.clone(),
+        },
+        async move {
             // Err: run is returning either way.
             let _ = drained_rx.await;
-        });
+        },
+    );
     let mut server = Box::pin(server);
 
-    let served = tokio::select! {
-        served = &mut server => served,
+    tokio::select! {
+        () = &mut server => {}
         () = shutdown => {
             tracing::info!("shutting down");
             watchdog::set(&health, tonic_health::ServingStatus::NotServing).await;
@@ -231,17 +234,11 @@ pub async fn run(
             }
             // Err: the server already ended.
             let _ = drained_tx.send(());
-            match tokio::time::timeout(SHUTDOWN_LINGER, &mut server).await {
-                Ok(served) => served,
-                Err(_) => {
-                    tracing::info!("abandoning connections still open (subscribers not reading)");
-                    Ok(())
-                }
-            }
+            // Stops accepting, asks every connection to finish, and abandons the connections
+            // still open after a short linger (a subscriber that stopped reading).
+            server.await;
         }
     };
-    // Closes the listener: from here on a connection attempt is refused at once.
-    drop(server);
     trigger.trigger();
     watchdog.abort();
     let joined = tokio::task::spawn_blocking(move || {
@@ -254,6 +251,5 @@ pub async fn run(
     })
     .await?;
     tracing::info!("stopped");
-    served?;
     joined
 }

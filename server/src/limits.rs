@@ -54,10 +54,29 @@ pub const MAX_CALLS_PER_CONNECTION: usize = 64;
 pub const MAX_SUBSCRIBERS: u32 = 1024;
 /// StreamGaze calls the server serves at once; more answer RESOURCE_EXHAUSTED.
 pub const MAX_GAZE_STREAMS: u32 = 256;
+/// Health watches one connection may have open at once (a client watches one service or two).
+pub const MAX_HEALTH_WATCHES_PER_CONNECTION: usize = 8;
+/// Health watches the server serves at once, all connections together.
+pub const MAX_HEALTH_WATCHES: usize = 1024;
 /// HTTP/2 keepalive: ping an idle connection this often...
 pub const KEEPALIVE_INTERVAL: Duration = Duration::from_secs(20);
 /// ... and close it when the ping is not answered within this.
 pub const KEEPALIVE_TIMEOUT: Duration = Duration::from_secs(10);
+
+/// At most `max` bytes of a client's string for a log line or a message: control characters
+/// become `?`, and a longer string is cut at a character boundary and marked with `…` and its
+/// length, so that nothing a client sends is ever copied unbounded.
+pub fn excerpt(s: &str, max: usize) -> String {
+    let mut out = String::new();
+    for c in s.chars() {
+        if out.len() + c.len_utf8() > max {
+            out.push_str(&format!("… ({} bytes)", s.len()));
+            return out;
+        }
+        out.push(if c.is_control() { '?' } else { c });
+    }
+    out
+}
 
 /// The limits a server enforces (flags `--max-candidate-pairs`, `--max-memory-mib`,
 /// `--max-gaze-rate`).
@@ -211,7 +230,8 @@ pub struct PushLimiters {
 }
 
 impl PushLimiters {
-    /// How many of `n` samples from `peer` fit under `rate_hz` at `now` (the first ones do).
+    /// How many of `n` samples from `peer` fit under `rate_hz` at `now` (the caller keeps the
+    /// newest that many).
     pub fn admit(&self, peer: Option<SocketAddr>, n: usize, rate_hz: f64, now: Instant) -> usize {
         let mut buckets = self.buckets.lock().unwrap_or_else(PoisonError::into_inner);
         if buckets.len() > 4096 {
@@ -266,6 +286,16 @@ mod tests {
         };
         let e = tight.check(&c).expect_err("memory");
         assert!(e.expected.contains("1 MiB"), "{e}");
+    }
+
+    #[test]
+    fn excerpts_are_bounded_and_printable() {
+        assert_eq!(excerpt("eyelink", 64), "eyelink");
+        assert_eq!(excerpt("a\nb\x1b[31m", 64), "a?b?[31m");
+        let long = "é".repeat(100);
+        let e = excerpt(&long, 9);
+        assert!(e.starts_with("éééé…"), "{e}");
+        assert!(e.ends_with("(200 bytes)"), "{e}");
     }
 
     #[test]

@@ -182,21 +182,28 @@ impl pb::foveal_server::Foveal for FovealService {
         let received = Instant::now();
         let peer = request.remote_addr();
         let req = request.into_inner();
-        gaze::check_batch_size(req.samples.len()).map_err(Status::invalid_argument)?;
+        gaze::check_batch_size(req.samples.len())
+            .and_then(|()| gaze::check_source(&req.source))
+            .map_err(|e| Status::invalid_argument(format!("PushGazeRequest.{e}")))?;
         let admitted = self.push_limiters.admit(
             peer,
             req.samples.len(),
             self.limits.max_gaze_rate_hz,
             received,
         );
-        let rate_limited = (req.samples.len() - admitted) as u64;
+        // Over the rate limit, the oldest samples go: the newest are the gaze that steers now.
+        let dropped = req.samples.len() - admitted;
+        let rate_limited = dropped as u64;
         if rate_limited > 0 {
             self.shared.metrics.gaze_limited(rate_limited);
         }
         let mut validator = GazeValidator::new();
+        for _ in 0..dropped {
+            validator.skip();
+        }
         // Every accepted sample (and every missing one, which marks track loss) goes through the
         // online processing in order, under one lock; samples over the rate limit are not read.
-        let usable: Vec<_> = req.samples[..admitted]
+        let usable: Vec<_> = req.samples[dropped..]
             .iter()
             .filter(|sample| match validator.check(sample) {
                 Ok(_) => true,

@@ -8,16 +8,25 @@
 //! [`ViewerLayer`] sits in front of every service: a `GET` or `HEAD` that is not gRPC is answered
 //! from the embedded assets (404 for an unknown path); everything else goes through the grpc-web
 //! translation (which passes plain gRPC over HTTP/2 through untouched) to the services.
+//!
+//! Before either, a browser's request must name an allowed `Host` and come from an allowed
+//! `Origin` ([`crate::origin`]): a refused page request gets 403 with the reason, a refused
+//! grpc-web call PERMISSION_DENIED with the same reason.
 
 use std::future::Future;
 use std::pin::Pin;
+use std::sync::Arc;
 use std::task::{Context, Poll};
+use std::time::Instant;
 
 use axum::http::{HeaderValue, Method, Request, Response, StatusCode, header};
 use tonic::body::Body;
 use tonic_web::{GrpcWebLayer, GrpcWebService};
 use tower_layer::Layer;
 use tower_service::Service;
+
+use crate::origin::Origins;
+use crate::transport::{Every, LOG_EVERY};
 
 /// One embedded file.
 #[derive(Debug)]
@@ -45,9 +54,23 @@ const ASSETS: &[Asset] = &[
     asset!("/viewer.css", "viewer.css", "text/css; charset=utf-8"),
 ];
 
-/// The layer that puts the viewer (page and grpc-web) in front of the gRPC services.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct ViewerLayer;
+/// The layer that puts the viewer (page and grpc-web) in front of the gRPC services, behind
+/// the browsers' allow-list.
+#[derive(Debug, Clone)]
+pub struct ViewerLayer {
+    origins: Arc<Origins>,
+    refusals: Arc<Every>,
+}
+
+impl ViewerLayer {
+    /// The viewer, answering browsers allowed by `origins`.
+    pub fn new(origins: Origins) -> Self {
+        Self {
+            origins: Arc::new(origins),
+            refusals: Arc::new(Every::new(LOG_EVERY)),
+        }
+    }
+}
 
 impl<S> Layer<S> for ViewerLayer {
     type Service = ViewerService<S>;
@@ -55,6 +78,8 @@ impl<S> Layer<S> for ViewerLayer {
     fn layer(&self, inner: S) -> Self::Service {
         ViewerService {
             inner: GrpcWebLayer::new().layer(inner),
+            origins: Arc::clone(&self.origins),
+            refusals: Arc::clone(&self.refusals),
         }
     }
 }
@@ -63,6 +88,8 @@ impl<S> Layer<S> for ViewerLayer {
 #[derive(Debug, Clone)]
 pub struct ViewerService<S> {
     inner: GrpcWebService<S>,
+    origins: Arc<Origins>,
+    refusals: Arc<Every>,
 }
 
 type BoxFuture<T, E> = Pin<Box<dyn Future<Output = Result<T, E>> + Send>>;
@@ -82,6 +109,17 @@ where
     }
 
     fn call(&mut self, request: Request<B>) -> Self::Future {
+        let authority = request.uri().authority().map(|a| a.as_str());
+        if let Err(why) = self
+            .origins
+            .check(request.version(), authority, request.headers())
+        {
+            if let Some(held) = self.refusals.check(Instant::now()) {
+                let peer = crate::transport::connection_of(&request).and_then(|c| c.remote);
+                tracing::info!(?peer, refused_since_last_line = held, reason = %why, "browser request refused");
+            }
+            return Box::pin(std::future::ready(Ok(refusal(&request, why))));
+        }
         if is_page_request(&request) {
             let response = asset_response(request.method(), request.uri().path());
             return Box::pin(std::future::ready(Ok(response)));
@@ -98,6 +136,30 @@ fn is_page_request<B>(request: &Request<B>) -> bool {
         .and_then(|v| v.to_str().ok())
         .is_some_and(|v| v.starts_with("application/grpc"));
     !grpc && (request.method() == Method::GET || request.method() == Method::HEAD)
+}
+
+/// The answer to a request the allow-list refused: PERMISSION_DENIED for gRPC of any flavour
+/// (a grpc-web client shows the message), 403 with the message for anything else.
+fn refusal<B>(request: &Request<B>, why: String) -> Response<Body> {
+    let content_type = request.headers().get(header::CONTENT_TYPE).cloned();
+    if content_type
+        .as_ref()
+        .and_then(|v| v.to_str().ok())
+        .is_some_and(|v| v.starts_with("application/grpc"))
+    {
+        let mut response = tonic::Status::permission_denied(why).into_http::<Body>();
+        if let Some(ct) = content_type {
+            response.headers_mut().insert(header::CONTENT_TYPE, ct);
+        }
+        return response;
+    }
+    let mut response = Response::new(Body::new(axum::body::Body::from(format!("{why}\n"))));
+    *response.status_mut() = StatusCode::FORBIDDEN;
+    response.headers_mut().insert(
+        header::CONTENT_TYPE,
+        HeaderValue::from_static("text/plain; charset=utf-8"),
+    );
+    response
 }
 
 fn asset_response(method: &Method, path: &str) -> Response<Body> {

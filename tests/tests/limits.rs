@@ -386,3 +386,39 @@ async fn sphere_test_budget_overshoots_by_at_most_one_step() {
     assert!(exhausted > 0, "the scene needs more than the budget");
     server.stop().await.expect("clean stop");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_push_batch_over_the_rate_limit_keeps_its_newest_samples() {
+    // The default limit: 4,000 samples/s with a burst of 1,000.
+    let server = TestServer::start(small_config(40, 30.0)).await;
+    let mut client = server.client().await;
+    let n = 10_000u32;
+    // A sweep from x = 0 to 0.9999 at 10 kHz: only the end of it is where the viewer looks now.
+    let samples = (0..n)
+        .map(|i| {
+            let x = f64::from(i) / f64::from(n);
+            sample(f64::from(i) * 1e-4, x, 0.5)
+        })
+        .collect();
+    let r = client
+        .push_gaze(pb::PushGazeRequest {
+            samples,
+            source: "sweep".into(),
+        })
+        .await
+        .expect("PushGaze")
+        .into_inner();
+    assert_eq!(r.accepted + r.rejected + r.rate_limited, u64::from(n));
+    assert_eq!(r.rejected, 0, "{:?}", r.rejections);
+    assert!(r.rate_limited >= 8_000, "{r:?}");
+    // The last sample of the batch was kept, and it is the gaze the frames use.
+    assert_eq!(r.last_accepted_time_s, f64::from(n - 1) * 1e-4);
+    let mut frames = foveal_tests::watch(&mut client, 1, false).await;
+    let f = foveal_tests::frame_where(&mut frames, "a frame steered by the batch", |f| {
+        foveal_tests::fixation(f).source == foveal_tests::FixationSource::Gaze as i32
+    })
+    .await;
+    let x = foveal_tests::fixation(&f).x;
+    assert!((x - 0.9999).abs() < 1e-9, "the fixation is at x = {x}");
+    server.stop().await.expect("clean stop");
+}

@@ -237,3 +237,54 @@ async fn bad_configure_is_invalid_argument_naming_the_field_and_changes_nothing(
     assert_eq!(scene.config.expect("config").bodies, 250);
     server.stop().await.expect("clean stop");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn push_gaze_sources_are_short_printable_names() {
+    let server = TestServer::start(small_config(50, 30.0)).await;
+    let mut client = server.client().await;
+    for (source, why) in [
+        ("s".repeat(256 << 10), "262144 bytes long"),
+        (
+            "x".repeat(foveal_server::MAX_SOURCE_BYTES + 1),
+            "65 bytes long",
+        ),
+        (
+            "tracker\n\u{1b}[31mforged log line".to_owned(),
+            "control character",
+        ),
+    ] {
+        let err = client
+            .push_gaze(pb::PushGazeRequest {
+                samples: vec![sample(1.0, 0.5, 0.5)],
+                source,
+            })
+            .await
+            .expect_err("refused");
+        assert_eq!(err.code(), Code::InvalidArgument);
+        let m = err.message();
+        assert!(
+            m.contains("PushGazeRequest.`source`") && m.contains(why),
+            "{m}"
+        );
+        assert!(
+            m.contains(&foveal_server::MAX_SOURCE_BYTES.to_string()),
+            "{m}"
+        );
+        assert!(m.len() < 300, "the message does not quote the source: {m}");
+    }
+    assert_eq!(
+        status(&mut client).await.gaze_samples_accepted,
+        0,
+        "nothing of a refused batch is applied"
+    );
+    let ok = client
+        .push_gaze(pb::PushGazeRequest {
+            samples: vec![sample(1.0, 0.5, 0.5)],
+            source: "x".repeat(foveal_server::MAX_SOURCE_BYTES),
+        })
+        .await
+        .expect("a 64-byte name")
+        .into_inner();
+    assert_eq!(ok.accepted, 1);
+    server.stop().await.expect("clean stop");
+}

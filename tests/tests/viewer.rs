@@ -110,7 +110,7 @@ async fn the_viewer_page_and_grpc_web_share_the_grpc_port() {
     let page = text(
         &http1(
             &server,
-            b"GET / HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n",
+            b"GET / HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n",
         )
         .await,
     );
@@ -124,7 +124,7 @@ async fn the_viewer_page_and_grpc_web_share_the_grpc_port() {
     let script = text(
         &http1(
             &server,
-            b"GET /viewer.js HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n",
+            b"GET /viewer.js HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n",
         )
         .await,
     );
@@ -138,14 +138,14 @@ async fn the_viewer_page_and_grpc_web_share_the_grpc_port() {
     let missing = text(
         &http1(
             &server,
-            b"GET /nope HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n",
+            b"GET /nope HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n",
         )
         .await,
     );
     assert!(missing.starts_with("HTTP/1.1 404"), "{missing}");
 
     // GetStatus as grpc-web over HTTP/1.1: an empty message behind the 5-byte frame header.
-    let call = b"POST /foveal.v1.Foveal/GetStatus HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\
+    let call = b"POST /foveal.v1.Foveal/GetStatus HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\
         Content-Type: application/grpc-web+proto\r\nX-Grpc-Web: 1\r\nContent-Length: 5\r\n\r\n\0\0\0\0\0";
     let answer = http1(&server, call).await;
     let head = text(&answer);

@@ -4,6 +4,7 @@
 // with the reason, unless FOVEAL_REQUIRE_BROWSER is set (as .ci/run sets it after installing
 // them), in which case they fail.
 import { spawn } from "node:child_process";
+import { request as httpsRequest } from "node:https";
 import { existsSync, mkdirSync, mkdtempSync, rmSync } from "node:fs";
 import { createServer } from "node:net";
 import { tmpdir } from "node:os";
@@ -74,23 +75,39 @@ process.on("exit", () => {
   for (const p of running) p.kill("SIGKILL");
 });
 
-/** Start foveal-server on `port` with `args`; resolves once it serves the page. */
-export async function startServer(port, args) {
-  const proc = spawn(SERVER, ["--addr", `127.0.0.1:${port}`, "--log-level", "warn", ...args], {
+/** GET `url` over TLS trusting only `ca` (PEM); resolves with the status code. */
+function httpsStatus(url, ca) {
+  return new Promise((ok, fail) => {
+    const r = httpsRequest(url, { ca }, (res) => {
+      res.resume();
+      ok(res.statusCode);
+    });
+    r.once("error", fail);
+    r.end();
+  });
+}
+
+/**
+ * Start foveal-server on `port` with `args`; resolves once it serves the page. With `tls`
+ * (`{ cert, key, ca }`: file paths and the CA's PEM) it serves `https://localhost:PORT/`.
+ */
+export async function startServer(port, args, tls) {
+  const tlsArgs = tls ? ["--tls-cert", tls.cert, "--tls-key", tls.key] : [];
+  const proc = spawn(SERVER, ["--addr", `127.0.0.1:${port}`, "--log-level", "warn", ...tlsArgs, ...args], {
     stdio: ["ignore", "inherit", "inherit"],
   });
   running.add(proc);
   proc.once("exit", () => running.delete(proc));
   const failed = new Promise((_, fail) => proc.once("error", (e) => fail(new Error(`cannot start ${SERVER}: ${e.message}`))));
   failed.catch(() => {});
-  const url = `http://127.0.0.1:${port}/`;
+  const url = tls ? `https://localhost:${port}/` : `http://127.0.0.1:${port}/`;
   const until = Date.now() + 60_000;
   for (;;) {
     await Promise.race([failed, sleep(0)]);
     if (proc.exitCode !== null) throw new Error(`foveal-server exited with ${proc.exitCode}`);
     try {
-      const r = await fetch(url);
-      if (r.ok) break;
+      const status = tls ? await httpsStatus(url, tls.ca) : (await fetch(url)).status;
+      if (status === 200) break;
     } catch {
       // not listening yet
     }
@@ -127,8 +144,11 @@ export async function waitFor(f, ms, every = 20) {
   }
 }
 
-/** Debian's chromium, headless, software-rendered, with a fresh profile. */
-export async function launch() {
+/**
+ * Debian's chromium, headless, software-rendered, with a fresh profile; `extraArgs` are added to
+ * its command line and `options` to playwright's launch options.
+ */
+export async function launch(extraArgs = [], options = {}) {
   const { chromium } = await import("playwright-core");
   const profile = mkdtempSync(join(tmpdir(), "foveal-chromium-"));
   const browser = await chromium.launchPersistentContext(profile, {
@@ -146,7 +166,9 @@ export async function launch() {
       "--disable-sync",
       // WebGL on the CPU: without a GPU, chromium only offers SwiftShader when asked to.
       "--enable-unsafe-swiftshader",
+      ...extraArgs,
     ],
+    ...options,
   });
   return {
     browser,
