@@ -245,6 +245,7 @@ impl StudyConfig {
                 id: spec.stem(),
                 cost_s: shard::closed_loop_cost_s(self, spec),
                 kind: shard::CellKind::ClosedLoop(i),
+                group: None,
             })
             .collect();
         let parts = self.open_loop_parts();
@@ -276,6 +277,52 @@ pub fn open_loop_protocol_hash(cfg: &open_loop::OpenLoopConfig) -> String {
     c.out = PathBuf::new();
     c.jobs = 1;
     shard::fnv64(format!("{c:?}").as_bytes())
+}
+
+/// The open-loop cells of one (N, seed) in a shard: (cell, part, condition).
+type Group<'c> = Vec<(&'c CellSpec, usize, usize)>;
+
+/// Run one (N, seed)'s cells of a shard on one thread: each part cut to the group's conditions
+/// (parts without one left out), all on the scene's frames.
+fn run_open_group(
+    parts: &[&open_loop::OpenLoopConfig],
+    n: u32,
+    seed: u64,
+    group: &Group<'_>,
+) -> Result<Vec<OpenRecord>, BenchError> {
+    let mut subs: Vec<(open_loop::OpenLoopConfig, Vec<&CellSpec>)> = Vec::new();
+    for (pi, p) in parts.iter().enumerate() {
+        let picked: Vec<&(&CellSpec, usize, usize)> =
+            group.iter().filter(|(_, part, _)| *part == pi).collect();
+        if picked.is_empty() {
+            continue;
+        }
+        let sub = open_loop::OpenLoopConfig {
+            conditions: picked
+                .iter()
+                .filter_map(|(_, _, ci)| p.conditions.get(*ci).cloned())
+                .collect(),
+            jobs: 1,
+            ..(*p).clone()
+        };
+        subs.push((sub, picked.iter().map(|(c, _, _)| *c).collect()));
+    }
+    let refs: Vec<&open_loop::OpenLoopConfig> = subs.iter().map(|(s, _)| s).collect();
+    let (results, walls) = open_loop::run_parts_timed_on(&refs, &[(n, seed)])?;
+    let wall_s = walls.first().copied().unwrap_or(f64::NAN);
+    let mut out = Vec::new();
+    for ((sub, specs), per_part) in subs.iter().zip(&results) {
+        let Some(r) = per_part.first() else {
+            continue;
+        };
+        for (ci, (c, cond)) in specs.iter().zip(&sub.conditions).enumerate() {
+            let mut rec = OpenRecord::of(&c.id, &cond.name, r, ci);
+            rec.wall_s = Num(wall_s);
+            rec.run_cells = group.len() as u32;
+            out.push(rec);
+        }
+    }
+    Ok(out)
 }
 
 /// What a shard ran: its cells' names, and the records of its closed- and open-loop cells.
@@ -320,8 +367,6 @@ fn run_cells(
     }
     // The shard's open-loop cells by (N, seed), in order: each group runs its conditions, and
     // only those, on the scene's frames.
-    // (cell, part, condition) of each open-loop cell, by (N, seed).
-    type Group<'c> = Vec<(&'c CellSpec, usize, usize)>;
     let mut groups: Vec<((u32, u64), Group<'_>)> = Vec::new();
     for c in &mine {
         if let CellKind::OpenLoop {
@@ -337,39 +382,37 @@ fn run_cells(
             }
         }
     }
+    // The groups on the parts' `jobs` threads, the costliest first (as the open loop orders its
+    // runs), each group's cells in its records; the records come back in the shard's order.
+    let jobs = parts.first().map_or(1, |p| p.jobs.max(1));
+    let cost = |g: &Group<'_>| g.iter().map(|(c, _, _)| c.cost_s).sum::<f64>();
+    let mut order: Vec<usize> = (0..groups.len()).collect();
+    order.sort_by(|&a, &b| cost(&groups[b].1).total_cmp(&cost(&groups[a].1)));
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    type Done = (usize, Result<Vec<OpenRecord>, BenchError>);
+    let done: std::sync::Mutex<Vec<Done>> = std::sync::Mutex::new(Vec::new());
+    std::thread::scope(|scope| {
+        for _ in 0..jobs.min(groups.len()) {
+            scope.spawn(|| {
+                while let Some(&g) =
+                    order.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
+                {
+                    let ((n, seed), group) = &groups[g];
+                    let r = run_open_group(parts, *n, *seed, group);
+                    if let Ok(mut v) = done.lock() {
+                        v.push((g, r));
+                    }
+                }
+            });
+        }
+    });
+    let mut done = done
+        .into_inner()
+        .map_err(|_| BenchError::Invalid("a worker thread panicked".into()))?;
+    done.sort_by_key(|(g, _)| *g);
     let mut open = Vec::new();
-    for ((n, seed), group) in groups {
-        // Each part cut to the group's conditions; parts without one are left out.
-        let mut subs: Vec<(usize, open_loop::OpenLoopConfig, Vec<&CellSpec>)> = Vec::new();
-        for (pi, p) in parts.iter().enumerate() {
-            let picked: Vec<&(&CellSpec, usize, usize)> =
-                group.iter().filter(|(_, part, _)| *part == pi).collect();
-            if picked.is_empty() {
-                continue;
-            }
-            let sub = open_loop::OpenLoopConfig {
-                conditions: picked
-                    .iter()
-                    .filter_map(|(_, _, ci)| p.conditions.get(*ci).cloned())
-                    .collect(),
-                ..(*p).clone()
-            };
-            subs.push((pi, sub, picked.iter().map(|(c, _, _)| *c).collect()));
-        }
-        let refs: Vec<&open_loop::OpenLoopConfig> = subs.iter().map(|(_, s, _)| s).collect();
-        let (results, walls) = open_loop::run_parts_timed_on(&refs, &[(n, seed)])?;
-        let wall_s = walls.first().copied().unwrap_or(f64::NAN);
-        for ((_, sub, specs), per_part) in subs.iter().zip(&results) {
-            let Some(r) = per_part.first() else {
-                continue;
-            };
-            for (ci, (c, cond)) in specs.iter().zip(&sub.conditions).enumerate() {
-                let mut rec = OpenRecord::of(&c.id, &cond.name, r, ci);
-                rec.wall_s = Num(wall_s);
-                rec.run_cells = group.len() as u32;
-                open.push(rec);
-            }
-        }
+    for (_, r) in done {
+        open.extend(r?);
     }
     Ok((mine.iter().map(|c| c.id.clone()).collect(), closed, open))
 }

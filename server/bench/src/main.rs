@@ -140,20 +140,13 @@ fn cells_csv(partials: &[(PathBuf, shard::Partial)]) -> String {
 /// The estimated balance of `cells` over each shard count, as a markdown table (and, for one
 /// count, each shard's load).
 fn plan_markdown(cells: &[CellSpec], counts: &[u32]) -> String {
-    let total: f64 = cells.iter().map(|c| c.cost_s).sum();
     let mut s = format!(
-        "{} cells, {:.0} s of work on one core (estimated); longest cell {}\n\n",
-        cells.len(),
-        total,
-        cells
-            .iter()
-            .max_by(|a, b| a.cost_s.total_cmp(&b.cost_s))
-            .map(|c| format!("{} ({:.0} s)", c.id, c.cost_s))
-            .unwrap_or_default()
+        "{} cells; estimated seconds on one core of the reference machine (docs/DEPLOY.md)\n\n",
+        cells.len()
     );
     s.push_str(
-        "| shards | cells per shard | slowest shard (s) | slowest shard's share | even share | \
-         wall time |\n|---|---|---|---|---|---|\n",
+        "| shards | cells per shard | work (core-s) | longest unit (s) | slowest shard (s) | \
+         slowest shard's share | even share | wall time |\n|---|---|---|---|---|---|---|---|\n",
     );
     for &count in counts {
         let b = Balance::of(cells, count.max(1));
@@ -162,8 +155,10 @@ fn plan_markdown(cells: &[CellSpec], counts: &[u32]) -> String {
             b.cells.iter().max().copied().unwrap_or(0),
         );
         s.push_str(&format!(
-            "| {} | {lo}-{hi} | {:.0} | {:.4} | {:.4} | {} |\n",
+            "| {} | {lo}-{hi} | {:.0} | {:.0} | {:.0} | {:.4} | {:.4} | {} |\n",
             b.count,
+            b.total_s,
+            b.longest_unit_s,
             b.slowest_s(),
             b.slowest_share(),
             1.0 / f64::from(b.count),
@@ -171,10 +166,19 @@ fn plan_markdown(cells: &[CellSpec], counts: &[u32]) -> String {
         ));
     }
     if let [count] = counts {
-        let b = Balance::of(cells, (*count).max(1));
-        s.push_str("\n| shard | cells | estimated s |\n|---|---|---|\n");
+        let count = (*count).max(1);
+        let b = Balance::of(cells, count);
+        let owner = shard::assign(cells, count);
+        s.push_str("\n| shard | cells | estimated s | longest cell |\n|---|---|---|---|\n");
         for (i, (l, n)) in b.loads.iter().zip(&b.cells).enumerate() {
-            s.push_str(&format!("| {i} | {n} | {l:.1} |\n"));
+            let longest = cells
+                .iter()
+                .zip(&owner)
+                .filter(|(_, o)| **o as usize == i)
+                .map(|(c, _)| c)
+                .max_by(|a, b| a.cost_s.total_cmp(&b.cost_s))
+                .map_or(String::new(), |c| format!("{} ({:.1} s)", c.id, c.cost_s));
+            s.push_str(&format!("| {i} | {n} | {l:.1} | {longest} |\n"));
         }
     }
     s

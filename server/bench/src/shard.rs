@@ -245,13 +245,30 @@ fn coverage_message(
         ));
     }
     if !doubled.is_empty() {
-        parts.push(format!(
-            "{} cells in more than one partial: {}",
-            doubled.len(),
-            listed(doubled.iter().map(|(cell, files)| {
+        // By the files that hold them: a shard run twice names its two partials once.
+        let mut by_files: Vec<(&[PathBuf], Vec<String>)> = Vec::new();
+        for (cell, files) in doubled {
+            match by_files.iter_mut().find(|(f, _)| *f == files.as_slice()) {
+                Some((_, cells)) => cells.push(cell.clone()),
+                None => by_files.push((files, vec![cell.clone()])),
+            }
+        }
+        let groups: Vec<String> = by_files
+            .into_iter()
+            .map(|(files, cells)| {
                 let files: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
-                format!("{cell} (in {})", files.join(" and "))
-            }))
+                format!(
+                    "{} in each of {}: {}",
+                    cells.len(),
+                    files.join(" and "),
+                    listed(cells.into_iter())
+                )
+            })
+            .collect();
+        parts.push(format!(
+            "{} cells in more than one partial ({})",
+            doubled.len(),
+            groups.join("; ")
         ));
     }
     parts.join("; ")
@@ -379,10 +396,23 @@ pub struct CellSpec {
     /// (`table_n500_s3_fraction-0.1_priced`) or `open-loop_n10000_s2_p1_c03` (part 1, the grid;
     /// its condition 3).
     pub id: String,
-    /// Estimated seconds on one core of a 2-core reference machine (see docs/DEPLOY.md).
+    /// Estimated seconds on one core of a 2-core reference machine, run alone (see
+    /// docs/DEPLOY.md).
     pub cost_s: f64,
     /// What it runs.
     pub kind: CellKind,
+    /// The cells it is cheaper to run with (one open-loop scene's conditions share its frames).
+    pub group: Option<CellGroup>,
+}
+
+/// Cells that cost less together than apart: the conditions of one open-loop (N, seed), which
+/// share one exact run and one set of pair truths.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CellGroup {
+    /// The group's name (`open-loop_n10000_s2`).
+    pub key: String,
+    /// Estimated seconds of all its cells run together.
+    pub cost_s: f64,
 }
 
 /// Seconds per frame of a closed-loop run on the reference machine, measured at the paper's N
@@ -396,14 +426,17 @@ const CLOSED_FRAME_S: [(f64, f64, f64); 5] = [
     (500.0, 1.80e-4, 4.0e-4),
 ];
 
-/// Seconds per frame per distinct scheduling run of an open-loop cell, measured on the default
-/// protocol's cells at N = 500 and N = 10,000 (docs/DEPLOY.md has the commands).
-const OPEN_FRAME_S: [(f64, f64); 2] = [(500.0, 2.1e-6), (10_000.0, 9.0e-5)];
+/// Seconds per frame per distinct scheduling run of an open-loop cell: fitted, with the overhead
+/// below, to the CPU time of four cells of the default protocol each run alone (the grid's
+/// F2 C = 0.5 condition, 70 runs, and a model-mismatch condition, 16 runs, at N = 500 and
+/// N = 10,000; docs/DEPLOY.md has the commands and figures).
+const OPEN_FRAME_S: [(f64, f64); 2] = [(500.0, 2.9e-4), (10_000.0, 5.6e-3)];
 
 /// What a frame of an open-loop cell costs beside its scheduling runs (the exact step, its timing
-/// and every pair's truth), in scheduling runs: a cell alone pays it in full, cells of one
-/// (N, seed) in one shard share it.
-const OPEN_FRAME_OVERHEAD_RUNS: f64 = 3.0;
+/// and every pair's truth, each measuring model's weights), in scheduling runs: a cell alone pays
+/// it in full, cells of one (N, seed) run together share it. The fit gave 41 at N = 500 and 32
+/// at N = 10,000.
+const OPEN_FRAME_OVERHEAD_RUNS: f64 = 36.0;
 
 /// Log-log interpolation in `table` (x ascending), extrapolated along the nearest segment.
 fn loglog(table: &[(f64, f64)], x: f64) -> f64 {
@@ -429,29 +462,42 @@ pub fn closed_loop_cost_s(cfg: &StudyConfig, spec: &RunSpec) -> f64 {
     f64::from(cfg.warmup_frames + spec.frames) * loglog(&table, f64::from(spec.n))
 }
 
+/// Estimated seconds of an open-loop run at `n` of `parts` (conditions cut as wanted): its frames
+/// times its distinct scheduling runs and what every frame costs beside them.
+fn open_loop_run_cost_s(parts: &[&OpenLoopConfig], n: u32) -> f64 {
+    let Some(first) = parts.first() else {
+        return 0.0;
+    };
+    let runs = open_loop::schedule_runs(parts) as f64;
+    let frames = f64::from(first.warmup + first.timing_frames + first.frames_for(n));
+    frames * (runs + OPEN_FRAME_OVERHEAD_RUNS) * loglog(&OPEN_FRAME_S, f64::from(n))
+}
+
 /// Estimated seconds of one condition `ci` of open-loop part `part` at `n`, run alone.
 pub fn open_loop_cost_s(part: &OpenLoopConfig, ci: usize, n: u32) -> f64 {
     let alone = OpenLoopConfig {
         conditions: part.conditions.get(ci).cloned().into_iter().collect(),
         ..part.clone()
     };
-    let runs = open_loop::schedule_runs(&[&alone]) as f64;
-    let frames = f64::from(part.warmup + part.timing_frames + part.frames_for(n));
-    frames * (runs + OPEN_FRAME_OVERHEAD_RUNS) * loglog(&OPEN_FRAME_S, f64::from(n))
+    open_loop_run_cost_s(&[&alone], n)
 }
 
 /// The open-loop cells of parts run on the same frames: for each (N, seed), each part's
-/// conditions in order.
+/// conditions in order, grouped by (N, seed).
 pub fn open_loop_cells(parts: &[&OpenLoopConfig]) -> Vec<CellSpec> {
     let Some(first) = parts.first() else {
         return Vec::new();
     };
     let mut cells = Vec::new();
     for (n, seed) in open_loop::cells(first) {
+        let group = CellGroup {
+            key: format!("open-loop_n{n}_s{seed}"),
+            cost_s: open_loop_run_cost_s(parts, n),
+        };
         for (pi, p) in parts.iter().enumerate() {
             for ci in 0..p.conditions.len() {
                 cells.push(CellSpec {
-                    id: format!("open-loop_n{n}_s{seed}_p{pi}_c{ci:02}"),
+                    id: format!("{}_p{pi}_c{ci:02}", group.key),
                     cost_s: open_loop_cost_s(p, ci, n),
                     kind: CellKind::OpenLoop {
                         n,
@@ -459,6 +505,7 @@ pub fn open_loop_cells(parts: &[&OpenLoopConfig]) -> Vec<CellSpec> {
                         part: pi,
                         condition: ci,
                     },
+                    group: Some(group.clone()),
                 });
             }
         }
@@ -477,31 +524,75 @@ pub fn check_unique(cells: &[CellSpec]) -> Result<(), ShardError> {
     Ok(())
 }
 
-/// The shard of every cell (by position in `cells`) among `count`: longest estimated cost first,
-/// each to the shard with the least estimated work so far, ties to the lower index; cells of equal
-/// cost are taken in name order, so every shard computes the same assignment.
+/// The units of work `cells` are dealt out in over `count` shards, with their estimated seconds:
+/// a group's cells together (they share work) unless the group alone is more than an even
+/// share of all the work, when its cells go out one by one, so that many shards can take a
+/// long group apart. With one shard nothing is split: the whole run is one machine's.
+pub fn units(cells: &[CellSpec], count: u32) -> Vec<(Vec<usize>, f64)> {
+    let mut units: Vec<(Vec<usize>, f64)> = Vec::new();
+    let mut group_of: BTreeMap<&str, usize> = BTreeMap::new();
+    for (k, c) in cells.iter().enumerate() {
+        match &c.group {
+            Some(g) => match group_of.get(g.key.as_str()) {
+                Some(&u) => units[u].0.push(k),
+                None => {
+                    group_of.insert(&g.key, units.len());
+                    units.push((vec![k], g.cost_s));
+                }
+            },
+            None => units.push((vec![k], c.cost_s)),
+        }
+    }
+    let target = units.iter().map(|(_, s)| s).sum::<f64>() / f64::from(count.max(1));
+    let mut out = Vec::with_capacity(units.len());
+    for (members, cost) in units {
+        if members.len() > 1 && cost > target {
+            out.extend(members.into_iter().map(|k| (vec![k], cells[k].cost_s)));
+        } else {
+            out.push((members, cost));
+        }
+    }
+    out
+}
+
+/// The shard of every cell (by position in `cells`) among `count`: the [`units`] longest
+/// estimated cost first, each to the shard with the least estimated work so far, ties to the lower
+/// index; units of equal cost are taken in their first cell's name order, so every shard
+/// computes the same assignment.
 pub fn assign(cells: &[CellSpec], count: u32) -> Vec<u32> {
+    assign_units(cells, &units(cells, count), count).0
+}
+
+/// [`assign`], with each shard's estimated load.
+fn assign_units(
+    cells: &[CellSpec],
+    units: &[(Vec<usize>, f64)],
+    count: u32,
+) -> (Vec<u32>, Vec<f64>) {
     let count = count.max(1) as usize;
-    let mut order: Vec<usize> = (0..cells.len()).collect();
+    let name = |u: usize| units[u].0.first().map_or("", |&k| cells[k].id.as_str());
+    let mut order: Vec<usize> = (0..units.len()).collect();
     order.sort_by(|&a, &b| {
-        cells[b]
-            .cost_s
-            .total_cmp(&cells[a].cost_s)
-            .then_with(|| cells[a].id.cmp(&cells[b].id))
+        units[b]
+            .1
+            .total_cmp(&units[a].1)
+            .then_with(|| name(a).cmp(name(b)))
     });
     let mut load = vec![0.0f64; count];
     let mut out = vec![0u32; cells.len()];
-    for k in order {
+    for u in order {
         let mut best = 0;
         for (s, &l) in load.iter().enumerate() {
             if l < load[best] {
                 best = s;
             }
         }
-        load[best] += cells[k].cost_s;
-        out[k] = best as u32;
+        load[best] += units[u].1;
+        for &k in &units[u].0 {
+            out[k] = best as u32;
+        }
     }
-    out
+    (out, load)
 }
 
 /// The estimated balance of `cells` over `count` shards.
@@ -513,27 +604,26 @@ pub struct Balance {
     pub loads: Vec<f64>,
     /// Cells of each shard.
     pub cells: Vec<usize>,
-    /// Estimated seconds of every cell together.
+    /// Estimated seconds of all the work at this count (groups split apart cost more).
     pub total_s: f64,
-    /// The longest single cell (s): no shard count finishes sooner.
-    pub longest_cell_s: f64,
+    /// The longest unit of work (s): no shard finishes sooner than the one that has it.
+    pub longest_unit_s: f64,
 }
 
 impl Balance {
     /// Balance `cells` over `count` shards as [`assign`] does.
     pub fn of(cells: &[CellSpec], count: u32) -> Self {
         let count = count.max(1);
-        let owner = assign(cells, count);
-        let mut loads = vec![0.0; count as usize];
+        let units = units(cells, count);
+        let (owner, loads) = assign_units(cells, &units, count);
         let mut n = vec![0; count as usize];
-        for (c, &s) in cells.iter().zip(&owner) {
-            loads[s as usize] += c.cost_s;
+        for &s in &owner {
             n[s as usize] += 1;
         }
         Self {
             count,
-            total_s: cells.iter().map(|c| c.cost_s).sum(),
-            longest_cell_s: cells.iter().map(|c| c.cost_s).fold(0.0, f64::max),
+            total_s: units.iter().map(|(_, s)| s).sum(),
+            longest_unit_s: units.iter().map(|(_, s)| *s).fold(0.0, f64::max),
             loads,
             cells: n,
         }
@@ -1197,6 +1287,7 @@ mod tests {
                 part: 0,
                 condition: 0,
             },
+            group: None,
         }
     }
 
@@ -1260,6 +1351,37 @@ mod tests {
         let b = Balance::of(&cells, 8);
         assert_eq!(b.slowest_s(), 10.0);
         assert_eq!(b.cells.iter().sum::<usize>(), 5);
+    }
+
+    #[test]
+    fn a_group_stays_together_unless_it_alone_exceeds_a_shards_share() {
+        let grouped = |id: &str, cost_s: f64| CellSpec {
+            group: Some(CellGroup {
+                key: "g".into(),
+                cost_s: 6.0,
+            }),
+            ..cell(id, cost_s)
+        };
+        // Alone the group's three cells cost 9; together 6.
+        let cells = vec![
+            grouped("g1", 3.0),
+            grouped("g2", 3.0),
+            grouped("g3", 3.0),
+            cell("x", 5.0),
+            cell("y", 1.0),
+        ];
+        // Two shards: 12 s of work, 6 each; the group fits in one.
+        let owner = assign(&cells, 2);
+        assert!(owner[0] == owner[1] && owner[1] == owner[2], "{owner:?}");
+        let b = Balance::of(&cells, 2);
+        assert_eq!(b.total_s, 12.0);
+        assert_eq!(b.slowest_s(), 6.0);
+        // Four shards: 3 s each; the group (6) is split and its cells spread.
+        let owner = assign(&cells, 4);
+        assert!(owner[0] != owner[1] || owner[1] != owner[2], "{owner:?}");
+        assert_eq!(Balance::of(&cells, 4).total_s, 15.0);
+        // One shard: nothing split.
+        assert_eq!(Balance::of(&cells, 1).total_s, 12.0);
     }
 
     #[test]
