@@ -246,6 +246,7 @@ impl StudyConfig {
                 cost_s: shard::closed_loop_cost_s(self, spec),
                 kind: shard::CellKind::ClosedLoop(i),
                 group: None,
+                serial: spec.part == Part::Table || self.jobs <= 1,
             })
             .collect();
         let parts = self.open_loop_parts();

@@ -139,13 +139,14 @@ fn cells_csv(partials: &[(PathBuf, shard::Partial)]) -> String {
 
 /// The estimated balance of `cells` over each shard count, as a markdown table (and, for one
 /// count, each shard's load).
-fn plan_markdown(cells: &[CellSpec], counts: &[u32]) -> String {
+fn plan_markdown(cells: &[CellSpec], counts: &[u32], jobs: usize) -> String {
     let mut s = format!(
-        "{} cells; estimated seconds on one core of the reference machine (docs/DEPLOY.md)\n\n",
+        "{} cells; estimated core-seconds of the reference machine (docs/DEPLOY.md); wall time \
+         on workers of {jobs} threads (--jobs)\n\n",
         cells.len()
     );
     s.push_str(
-        "| shards | cells per shard | work (core-s) | longest unit (s) | slowest shard (s) | \
+        "| shards | cells per shard | work (core-s) | longest unit (s) | slowest shard (core-s) | \
          slowest shard's share | even share | wall time |\n|---|---|---|---|---|---|---|---|\n",
     );
     for &count in counts {
@@ -162,7 +163,7 @@ fn plan_markdown(cells: &[CellSpec], counts: &[u32]) -> String {
             b.slowest_s(),
             b.slowest_share(),
             1.0 / f64::from(b.count),
-            human(b.slowest_s())
+            human(b.slowest_wall_s(jobs))
         ));
     }
     if let [count] = counts {
@@ -346,7 +347,11 @@ fn open_loop(args: &OpenLoopArgs) -> Result<()> {
     if let Some(counts) = &args.sharding.plan {
         print!(
             "{}",
-            plan_markdown(&foveal_bench::shard::open_loop_cells(&[&cfg]), counts)
+            plan_markdown(
+                &foveal_bench::shard::open_loop_cells(&[&cfg]),
+                counts,
+                cfg.jobs
+            )
         );
         return Ok(());
     }
@@ -773,7 +778,7 @@ fn study(args: &StudyArgs) -> Result<()> {
     }
     let cfg = args.config()?;
     if let Some(counts) = &args.sharding.plan {
-        print!("{}", plan_markdown(&cfg.cells(), counts));
+        print!("{}", plan_markdown(&cfg.cells(), counts, cfg.jobs));
         return Ok(());
     }
     if let Some(shard) = args.sharding.shard()? {
