@@ -39,6 +39,11 @@ pub struct Cli {
     /// Address to listen on (use 0.0.0.0:50051 in a container).
     #[arg(long, env = "FOVEAL_ADDR", default_value = "127.0.0.1:50051")]
     pub addr: SocketAddr,
+    /// Also serve the standard gRPC health service, and nothing else, in plaintext on this
+    /// address: for orchestrators' probes (Kubernetes' gRPC probe speaks neither TLS nor tokens).
+    /// Health is open on --addr as well; this port only says whether frames complete.
+    #[arg(long, env = "FOVEAL_HEALTH_ADDR")]
+    pub health_addr: Option<SocketAddr>,
     /// Number of bodies.
     #[arg(short = 'n', long, env = "FOVEAL_BODIES", default_value_t = DEFAULT_BODIES)]
     pub bodies: u32,

@@ -37,6 +37,7 @@ use std::time::Duration;
 use foveal_engine::Simulation;
 use foveal_proto::pb::foveal_server::FovealServer;
 use tokio::net::TcpListener;
+use tokio_stream::wrappers::TcpListenerStream;
 
 mod auth;
 pub mod cli;
@@ -104,6 +105,18 @@ pub async fn run(
     config: ServerConfig,
     shutdown: impl Future<Output = ()>,
 ) -> Result<(), ServerError> {
+    run_with_health(listener, None, config, shutdown).await
+}
+
+/// [`run`], and on `health` (if given) the standard health service alone, in plaintext and
+/// without tokens, for probes that speak neither (Kubernetes' gRPC probe): it reports what the
+/// main port's health does, NOT_SERVING through the shutdown's drain, and closes with it.
+pub async fn run_with_health(
+    listener: TcpListener,
+    health_listener: Option<TcpListener>,
+    config: ServerConfig,
+    shutdown: impl Future<Output = ()>,
+) -> Result<(), ServerError> {
     config.validate()?;
     let local = listener.local_addr().ok();
     check_exposure(local, &config.security)?;
@@ -148,6 +161,25 @@ pub async fn run(
         config.stall_periods,
         stop.clone(),
     ));
+    let (health_stop, health_stopped) = tokio::sync::oneshot::channel::<()>();
+    let health_port = health_listener.map(|l| {
+        if let Ok(a) = l.local_addr() {
+            tracing::info!(addr = %a, "serving health alone in plaintext (--health-addr)");
+        }
+        let svc = health_service.clone();
+        tokio::spawn(async move {
+            let served = tonic::transport::Server::builder()
+                .add_service(svc)
+                .serve_with_incoming_shutdown(TcpListenerStream::new(l), async move {
+                    // Err: run is returning either way.
+                    let _ = health_stopped.await;
+                })
+                .await;
+            if let Err(e) = served {
+                tracing::error!(error = %e, "the health port failed");
+            }
+        })
+    });
     let reflection = || {
         tonic_reflection::server::Builder::configure()
             .register_encoded_file_descriptor_set(foveal_proto::FILE_DESCRIPTOR_SET)
@@ -239,6 +271,13 @@ pub async fn run(
             server.await;
         }
     };
+    // Err: the health port already ended.
+    let _ = health_stop.send(());
+    if let Some(h) = health_port
+        && tokio::time::timeout(transport::SHUTDOWN_LINGER, h).await.is_err()
+    {
+        tracing::info!("abandoning probes still connected to the health port");
+    }
     trigger.trigger();
     watchdog.abort();
     let joined = tokio::task::spawn_blocking(move || {

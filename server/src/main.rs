@@ -13,7 +13,15 @@ async fn main() -> anyhow::Result<()> {
     let listener = tokio::net::TcpListener::bind(cli.addr)
         .await
         .with_context(|| format!("binding {}", cli.addr))?;
-    foveal_server::run(listener, config, shutdown_signal()).await?;
+    let health = match cli.health_addr {
+        Some(addr) => Some(
+            tokio::net::TcpListener::bind(addr)
+                .await
+                .with_context(|| format!("binding --health-addr {addr}"))?,
+        ),
+        None => None,
+    };
+    foveal_server::run_with_health(listener, health, config, shutdown_signal()).await?;
     Ok(())
 }
 

@@ -40,6 +40,9 @@ pub enum BenchError {
         /// What plotters said.
         msg: String,
     },
+    /// A sharded run or a merge failed (the shard, the partial and the cells are named).
+    #[error(transparent)]
+    Shard(#[from] crate::shard::ShardError),
     /// The study configuration is unusable.
     #[error("invalid study: {0}")]
     Invalid(String),

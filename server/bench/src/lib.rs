@@ -18,6 +18,8 @@
 //!   gap against the independent judge.
 //! - [`shape_oracle`]: an independent judge of whether two stars touch, and of their distance, by
 //!   branch and bound over patches of their surfaces (shared with the engine's tests by path).
+//! - [`shard`]: a protocol's cells split over a cluster's workers, their partial results, and
+//!   the merge that writes what one machine would have.
 //! - [`gaze`]: the seeded fixation/saccade script and the recorded-trace reader.
 //! - [`runner`]: the `Instant` clock, one run, the plan, per-frame CSV records.
 //! - [`stats`]: per-run mean/sd, mean and 95% CI across seeds.
@@ -51,6 +53,7 @@ pub mod scale;
 pub mod session;
 pub mod shape_check;
 pub mod shape_oracle;
+pub mod shard;
 pub mod stats;
 pub mod stress;
 
@@ -61,6 +64,9 @@ pub use error::BenchError;
 pub use gaze::{GazeError, RecordedGaze, ScriptedGaze};
 pub use protocol::{CurvesConfig, GazeSpec, Mode, Part, RunSpec, StudyConfig};
 pub use runner::{InstantClock, RunSummary};
+pub use shard::{CellSpec, Partial, Shard, ShardError};
+
+use shard::{CellKind, ClosedRecord, Num, OpenRecord};
 
 use figures::{curve_figures, table_figures};
 use plots::Figure;
@@ -188,28 +194,31 @@ fn write_part(
     Ok(())
 }
 
-/// Run the study of `cfg` and write its CSVs, reports and figures under `cfg.out`.
+/// Run the study of `cfg` and write its CSVs, reports and figures under `cfg.out`: every cell on
+/// this machine, through the same partial result and merge a sharded run takes, so one machine
+/// and many write the same files.
 pub fn run_study(cfg: &StudyConfig) -> Result<StudyOutput, BenchError> {
-    cfg.validate()?;
     let started = std::time::Instant::now();
-    std::fs::create_dir_all(&cfg.out).map_err(|e| BenchError::io(&cfg.out, e))?;
-    let plan = cfg.plan();
-    let runs = runner::run_plan(cfg, &plan)?;
-    let mut out = StudyOutput {
-        figures_with_text: true,
-        ..StudyOutput::default()
-    };
-    write_part(cfg, Part::Table, &runs, &mut out)?;
-    write_part(cfg, Part::Curves, &runs, &mut out)?;
-    if let Some(ol) = &cfg.open_loop {
+    let partial = run_study_shard(cfg, Shard::WHOLE, serde_json::Value::Null)?;
+    let mut out = merge_study(cfg, &[(cfg.out.join(Shard::WHOLE.file_name()), partial)])?;
+    out.wall_s = started.elapsed().as_secs_f64();
+    Ok(out)
+}
+
+impl StudyConfig {
+    /// The open-loop parts as the study runs them, on one set of frames: the comparison, then the
+    /// sensitivity grid (written under `out/grid`) with the comparison's N, seeds and frames.
+    pub fn open_loop_parts(&self) -> Vec<open_loop::OpenLoopConfig> {
+        let Some(ol) = &self.open_loop else {
+            return Vec::new();
+        };
         let ol = open_loop::OpenLoopConfig {
-            out: cfg.out.clone(),
-            jobs: cfg.jobs.max(1),
-            truth: cfg.truth,
+            out: self.out.clone(),
+            jobs: self.jobs.max(1),
+            truth: self.truth,
             ..ol.clone()
         };
-        // The grid runs on the open-loop part's frames: one exact run, one set of truths.
-        let grid = cfg.grid.as_ref().map(|g| open_loop::OpenLoopConfig {
+        let grid = self.grid.as_ref().map(|g| open_loop::OpenLoopConfig {
             ns: ol.ns.clone(),
             seeds: ol.seeds.clone(),
             frames: ol.frames.clone(),
@@ -217,12 +226,275 @@ pub fn run_study(cfg: &StudyConfig) -> Result<StudyOutput, BenchError> {
             timing_frames: ol.timing_frames,
             jobs: ol.jobs,
             truth: ol.truth,
-            out: cfg.out.join("grid"),
+            out: self.out.join("grid"),
             ..g.clone()
         });
-        let mut parts = vec![&ol];
-        parts.extend(grid.as_ref());
-        let written = open_loop::run_and_write_parts(&parts)?;
+        let mut parts = vec![ol];
+        parts.extend(grid);
+        parts
+    }
+
+    /// Every cell of the study, with its estimated cost: each closed-loop run of [`Self::plan`]
+    /// (plan order), then each (N, seed) of the open-loop parts.
+    pub fn cells(&self) -> Vec<CellSpec> {
+        let mut cells: Vec<CellSpec> = self
+            .plan()
+            .iter()
+            .enumerate()
+            .map(|(i, spec)| CellSpec {
+                id: spec.stem(),
+                cost_s: shard::closed_loop_cost_s(self, spec),
+                kind: shard::CellKind::ClosedLoop(i),
+                group: None,
+                serial: spec.part == Part::Table || self.jobs <= 1,
+            })
+            .collect();
+        let parts = self.open_loop_parts();
+        let refs: Vec<&open_loop::OpenLoopConfig> = parts.iter().collect();
+        cells.extend(shard::open_loop_cells(&refs));
+        cells
+    }
+
+    /// Hash of every setting that changes a result (not the output directory, threads, progress
+    /// or per-frame files): shards of one study must agree on it.
+    pub fn protocol_hash(&self) -> String {
+        let mut c = self.clone();
+        c.out = PathBuf::new();
+        c.jobs = 1;
+        c.frame_csv = false;
+        c.progress = false;
+        for p in c.open_loop.iter_mut().chain(c.grid.iter_mut()) {
+            p.out = PathBuf::new();
+            p.jobs = 1;
+        }
+        shard::fnv64(format!("{c:?}").as_bytes())
+    }
+}
+
+/// Hash of every setting of a standalone open-loop run that changes a result (not its output
+/// directory or threads).
+pub fn open_loop_protocol_hash(cfg: &open_loop::OpenLoopConfig) -> String {
+    let mut c = cfg.clone();
+    c.out = PathBuf::new();
+    c.jobs = 1;
+    shard::fnv64(format!("{c:?}").as_bytes())
+}
+
+/// The open-loop cells of one (N, seed) in a shard: (cell, part, condition).
+type Group<'c> = Vec<(&'c CellSpec, usize, usize)>;
+
+/// Run one (N, seed)'s cells of a shard on one thread: each part cut to the group's conditions
+/// (parts without one left out), all on the scene's frames.
+fn run_open_group(
+    parts: &[&open_loop::OpenLoopConfig],
+    n: u32,
+    seed: u64,
+    group: &Group<'_>,
+) -> Result<Vec<OpenRecord>, BenchError> {
+    let mut subs: Vec<(open_loop::OpenLoopConfig, Vec<&CellSpec>)> = Vec::new();
+    for (pi, p) in parts.iter().enumerate() {
+        let picked: Vec<&(&CellSpec, usize, usize)> =
+            group.iter().filter(|(_, part, _)| *part == pi).collect();
+        if picked.is_empty() {
+            continue;
+        }
+        let sub = open_loop::OpenLoopConfig {
+            conditions: picked
+                .iter()
+                .filter_map(|(_, _, ci)| p.conditions.get(*ci).cloned())
+                .collect(),
+            jobs: 1,
+            ..(*p).clone()
+        };
+        subs.push((sub, picked.iter().map(|(c, _, _)| *c).collect()));
+    }
+    let refs: Vec<&open_loop::OpenLoopConfig> = subs.iter().map(|(s, _)| s).collect();
+    let (results, walls) = open_loop::run_parts_timed_on(&refs, &[(n, seed)])?;
+    let wall_s = walls.first().copied().unwrap_or(f64::NAN);
+    let mut out = Vec::new();
+    for ((sub, specs), per_part) in subs.iter().zip(&results) {
+        let Some(r) = per_part.first() else {
+            continue;
+        };
+        for (ci, (c, cond)) in specs.iter().zip(&sub.conditions).enumerate() {
+            let mut rec = OpenRecord::of(&c.id, &cond.name, r, ci);
+            rec.wall_s = Num(wall_s);
+            rec.run_cells = group.len() as u32;
+            out.push(rec);
+        }
+    }
+    Ok(out)
+}
+
+/// What a shard ran: its cells' names, and the records of its closed- and open-loop cells.
+type ShardRecords = (Vec<String>, Vec<ClosedRecord>, Vec<OpenRecord>);
+
+/// Run the cells of `cells` that [`shard::assign`] gives `shard`: closed-loop runs of `study`'s
+/// plan, and open-loop cells of `parts`, those of one (N, seed) together on its frames.
+fn run_cells(
+    study: Option<&StudyConfig>,
+    parts: &[&open_loop::OpenLoopConfig],
+    cells: &[CellSpec],
+    shard: Shard,
+) -> Result<ShardRecords, BenchError> {
+    shard::check_unique(cells)?;
+    let owner = shard::assign(cells, shard.count);
+    let mine: Vec<&CellSpec> = cells
+        .iter()
+        .zip(&owner)
+        .filter(|(_, s)| **s == shard.index)
+        .map(|(c, _)| c)
+        .collect();
+    let mut closed = Vec::new();
+    if let Some(cfg) = study {
+        let plan = cfg.plan();
+        let picked: Vec<(&CellSpec, RunSpec)> = mine
+            .iter()
+            .filter_map(|c| match c.kind {
+                CellKind::ClosedLoop(i) => plan.get(i).map(|s| (*c, s.clone())),
+                CellKind::OpenLoop { .. } => None,
+            })
+            .collect();
+        let specs: Vec<RunSpec> = picked.iter().map(|(_, s)| s.clone()).collect();
+        if !specs.is_empty() {
+            std::fs::create_dir_all(&cfg.out).map_err(|e| BenchError::io(&cfg.out, e))?;
+        }
+        let runs = runner::run_plan(cfg, &specs)?;
+        closed = picked
+            .iter()
+            .zip(&runs)
+            .map(|((c, _), r)| ClosedRecord::of(&c.id, r))
+            .collect();
+    }
+    // The shard's open-loop cells by (N, seed), in order: each group runs its conditions, and
+    // only those, on the scene's frames.
+    let mut groups: Vec<((u32, u64), Group<'_>)> = Vec::new();
+    for c in &mine {
+        if let CellKind::OpenLoop {
+            n,
+            seed,
+            part,
+            condition,
+        } = c.kind
+        {
+            match groups.iter_mut().find(|(k, _)| *k == (n, seed)) {
+                Some((_, v)) => v.push((c, part, condition)),
+                None => groups.push(((n, seed), vec![(c, part, condition)])),
+            }
+        }
+    }
+    // The groups on the parts' `jobs` threads, the costliest first (as the open loop orders its
+    // runs), each group's cells in its records; the records come back in the shard's order.
+    let jobs = parts.first().map_or(1, |p| p.jobs.max(1));
+    let cost = |g: &Group<'_>| g.iter().map(|(c, _, _)| c.cost_s).sum::<f64>();
+    let mut order: Vec<usize> = (0..groups.len()).collect();
+    order.sort_by(|&a, &b| cost(&groups[b].1).total_cmp(&cost(&groups[a].1)));
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    type Done = (usize, Result<Vec<OpenRecord>, BenchError>);
+    let done: std::sync::Mutex<Vec<Done>> = std::sync::Mutex::new(Vec::new());
+    std::thread::scope(|scope| {
+        for _ in 0..jobs.min(groups.len()) {
+            scope.spawn(|| {
+                while let Some(&g) =
+                    order.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
+                {
+                    let ((n, seed), group) = &groups[g];
+                    let r = run_open_group(parts, *n, *seed, group);
+                    if let Ok(mut v) = done.lock() {
+                        v.push((g, r));
+                    }
+                }
+            });
+        }
+    });
+    let mut done = done
+        .into_inner()
+        .map_err(|_| BenchError::Invalid("a worker thread panicked".into()))?;
+    done.sort_by_key(|(g, _)| *g);
+    let mut open = Vec::new();
+    for (_, r) in done {
+        open.extend(r?);
+    }
+    Ok((mine.iter().map(|c| c.id.clone()).collect(), closed, open))
+}
+
+/// Run `shard`'s share of the study's cells and return its partial result; `protocol` is what the
+/// caller records to rebuild the protocol at merge (the binary's protocol flags).
+pub fn run_study_shard(
+    cfg: &StudyConfig,
+    shard: Shard,
+    protocol: serde_json::Value,
+) -> Result<Partial, BenchError> {
+    cfg.validate()?;
+    let load_start = open_loop::load_average();
+    let started = std::time::Instant::now();
+    let parts = cfg.open_loop_parts();
+    let refs: Vec<&open_loop::OpenLoopConfig> = parts.iter().collect();
+    let (cells, closed_loop, open_loop) = run_cells(Some(cfg), &refs, &cfg.cells(), shard)?;
+    Ok(Partial {
+        format: shard::PARTIAL_FORMAT.into(),
+        command: "study".into(),
+        protocol,
+        protocol_hash: cfg.protocol_hash(),
+        engine_hash: shard::ENGINE_SOURCE_HASH.into(),
+        shard,
+        cells,
+        closed_loop,
+        open_loop,
+        load_start,
+        load_end: open_loop::load_average(),
+        wall_s: Num(started.elapsed().as_secs_f64()),
+    })
+}
+
+/// Run `shard`'s share of a standalone open-loop comparison (`open-loop --shard`).
+pub fn run_open_loop_shard(
+    cfg: &open_loop::OpenLoopConfig,
+    shard: Shard,
+    protocol: serde_json::Value,
+) -> Result<Partial, BenchError> {
+    let load_start = open_loop::load_average();
+    let started = std::time::Instant::now();
+    let parts = [cfg];
+    let (cells, closed_loop, open_loop) =
+        run_cells(None, &parts, &shard::open_loop_cells(&parts), shard)?;
+    Ok(Partial {
+        format: shard::PARTIAL_FORMAT.into(),
+        command: "open-loop".into(),
+        protocol,
+        protocol_hash: open_loop_protocol_hash(cfg),
+        engine_hash: shard::ENGINE_SOURCE_HASH.into(),
+        shard,
+        cells,
+        closed_loop,
+        open_loop,
+        load_start,
+        load_end: open_loop::load_average(),
+        wall_s: Num(started.elapsed().as_secs_f64()),
+    })
+}
+
+/// Merge the partials of a study (of one command, protocol and engine: [`shard::check_same_run`])
+/// and write every table, CSV, report and figure under `cfg.out`, as one machine's run does.
+pub fn merge_study(
+    cfg: &StudyConfig,
+    partials: &[(PathBuf, Partial)],
+) -> Result<StudyOutput, BenchError> {
+    cfg.validate()?;
+    let parts = cfg.open_loop_parts();
+    let refs: Vec<&open_loop::OpenLoopConfig> = parts.iter().collect();
+    let cells = cfg.cells();
+    shard::check_unique(&cells)?;
+    let merged = shard::merge(&cells, &cfg.plan(), &refs, &cfg.protocol_hash(), partials)?;
+    std::fs::create_dir_all(&cfg.out).map_err(|e| BenchError::io(&cfg.out, e))?;
+    let mut out = StudyOutput {
+        figures_with_text: true,
+        ..StudyOutput::default()
+    };
+    write_part(cfg, Part::Table, &merged.closed_loop, &mut out)?;
+    write_part(cfg, Part::Curves, &merged.closed_loop, &mut out)?;
+    if !refs.is_empty() {
+        let written = open_loop::write_parts(&refs, &merged.open_loop, &merged.stamp)?;
         for w in &written {
             out.files.extend(w.files.iter().cloned());
         }
@@ -230,7 +502,21 @@ pub fn run_study(cfg: &StudyConfig) -> Result<StudyOutput, BenchError> {
         out.open_loop_report = reports.next();
         out.grid_report = reports.next();
     }
-    out.runs = runs;
-    out.wall_s = started.elapsed().as_secs_f64();
+    out.runs = merged.closed_loop;
+    out.wall_s = merged.stamp.wall_s;
     Ok(out)
+}
+
+/// Merge the partials of a standalone open-loop run and write its files under `cfg.out`.
+pub fn merge_open_loop(
+    cfg: &open_loop::OpenLoopConfig,
+    partials: &[(PathBuf, Partial)],
+) -> Result<open_loop::OpenLoopOutput, BenchError> {
+    let parts = [cfg];
+    let cells = shard::open_loop_cells(&parts);
+    shard::check_unique(&cells)?;
+    let merged = shard::merge(&cells, &[], &parts, &open_loop_protocol_hash(cfg), partials)?;
+    let mut v = open_loop::write_parts(&parts, &merged.open_loop, &merged.stamp)?;
+    v.pop()
+        .ok_or_else(|| BenchError::Invalid("the open-loop comparison wrote nothing".into()))
 }

@@ -8,7 +8,9 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, bail};
 use clap::{Args, Parser, Subcommand};
 use foveal_bench::protocol::{CurvesConfig, GazeSpec, StudyConfig};
+use foveal_bench::shard::{self, Balance, CellSpec, Shard};
 use foveal_engine::{PerceptualModel, SchedulerKind};
+use serde::{Deserialize, Serialize};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -50,6 +52,147 @@ enum Command {
     /// and 10,000 far from the origin. Exits non-zero if the engine's answer contradicts a sure
     /// verdict of the judge.
     ShapeCheck(ShapeCheckArgs),
+    /// Merge the partial results of a sharded `study` or `open-loop` run (every
+    /// `*.partial.json` in each DIR, or the files given) into the reports, CSVs and figures one
+    /// machine would have written. Refuses partials of different protocols or engine sources,
+    /// and names the cells missing or run twice.
+    Merge(MergeArgs),
+}
+
+#[derive(Debug, Args)]
+struct MergeArgs {
+    /// Directories holding the shards' partials (or partial files).
+    #[arg(required = true)]
+    inputs: Vec<PathBuf>,
+    /// Output directory (default: the protocol's, as the unsharded command would write).
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+fn merge(args: &MergeArgs) -> Result<()> {
+    let partials = shard::read_partials(&args.inputs)?;
+    let (command, protocol) = shard::check_same_run(&partials)?;
+    let shards: Vec<String> = partials.iter().map(|(_, p)| p.shard.to_string()).collect();
+    eprintln!(
+        "foveal-bench merge: {} partials of `{command}` (shards {})",
+        partials.len(),
+        shards.join(", ")
+    );
+    let out_dir = match command.as_str() {
+        "study" => {
+            let p: StudyProtocol = serde_json::from_value(protocol)
+                .context("the partials' study flags are not this foveal-bench's")?;
+            let mut cfg = p.config()?;
+            if let Some(o) = &args.out {
+                cfg.out = o.clone();
+            }
+            let out = foveal_bench::merge_study(&cfg, &partials).context("merge failed")?;
+            if let Some(report) = &out.open_loop_report {
+                println!("## Schedulers on identical frames (open loop)\n\n{report}");
+            }
+            for f in &out.files {
+                println!("{}", f.display());
+            }
+            cfg.out
+        }
+        "open-loop" => {
+            let p: OpenLoopProtocol = serde_json::from_value(protocol)
+                .context("the partials' open-loop flags are not this foveal-bench's")?;
+            let mut cfg = p.config();
+            if let Some(o) = &args.out {
+                cfg.out = o.clone();
+            }
+            let out = foveal_bench::merge_open_loop(&cfg, &partials).context("merge failed")?;
+            for f in &out.files {
+                eprintln!("{}", f.display());
+            }
+            print!("{}", out.report);
+            cfg.out
+        }
+        other => bail!("partials of `{other}`: merge reads those of `study` and `open-loop`"),
+    };
+    let path = out_dir.join("cells.csv");
+    std::fs::write(&path, cells_csv(&partials))
+        .with_context(|| format!("writing {}", path.display()))?;
+    eprintln!("{}", path.display());
+    Ok(())
+}
+
+/// Every cell's shard and measured wall time (s), from the partials: what the cost estimate of
+/// the next sharded run can be checked against. An open-loop cell's time is that of the run that
+/// computed it together with `run_cells - 1` others on the same frames.
+fn cells_csv(partials: &[(PathBuf, shard::Partial)]) -> String {
+    let mut s = String::from("cell,shard,wall_s,run_cells\n");
+    for (_, p) in partials {
+        for r in &p.closed_loop {
+            s.push_str(&format!("{},{},{:.3},1\n", r.cell, p.shard, r.wall_s.0));
+        }
+        for r in &p.open_loop {
+            s.push_str(&format!(
+                "{},{},{:.3},{}\n",
+                r.cell, p.shard, r.wall_s.0, r.run_cells
+            ));
+        }
+    }
+    s
+}
+
+/// The estimated balance of `cells` over each shard count, as a markdown table (and, for one
+/// count, each shard's load).
+fn plan_markdown(cells: &[CellSpec], counts: &[u32], jobs: usize) -> String {
+    let mut s = format!(
+        "{} cells; estimated core-seconds of the reference machine (docs/DEPLOY.md); wall time \
+         on workers of {jobs} threads (--jobs)\n\n",
+        cells.len()
+    );
+    s.push_str(
+        "| shards | cells per shard | work (core-s) | longest unit (s) | slowest shard (core-s) | \
+         slowest shard's share | even share | wall time |\n|---|---|---|---|---|---|---|---|\n",
+    );
+    for &count in counts {
+        let b = Balance::of(cells, count.max(1));
+        let (lo, hi) = (
+            b.cells.iter().min().copied().unwrap_or(0),
+            b.cells.iter().max().copied().unwrap_or(0),
+        );
+        s.push_str(&format!(
+            "| {} | {lo}-{hi} | {:.0} | {:.0} | {:.0} | {:.4} | {:.4} | {} |\n",
+            b.count,
+            b.total_s,
+            b.longest_unit_s,
+            b.slowest_s(),
+            b.slowest_share(),
+            1.0 / f64::from(b.count),
+            human(b.slowest_wall_s(jobs))
+        ));
+    }
+    if let [count] = counts {
+        let count = (*count).max(1);
+        let b = Balance::of(cells, count);
+        let owner = shard::assign(cells, count);
+        s.push_str("\n| shard | cells | estimated s | longest cell |\n|---|---|---|---|\n");
+        for (i, (l, n)) in b.loads.iter().zip(&b.cells).enumerate() {
+            let longest = cells
+                .iter()
+                .zip(&owner)
+                .filter(|(_, o)| **o as usize == i)
+                .map(|(c, _)| c)
+                .max_by(|a, b| a.cost_s.total_cmp(&b.cost_s))
+                .map_or(String::new(), |c| format!("{} ({:.1} s)", c.id, c.cost_s));
+            s.push_str(&format!("| {i} | {n} | {l:.1} | {longest} |\n"));
+        }
+    }
+    s
+}
+
+/// Seconds as `1 h 02 min`, `3 min 20 s` or `12 s`.
+fn human(s: f64) -> String {
+    let s = s.round() as u64;
+    match s {
+        0..=59 => format!("{s} s"),
+        60..=3599 => format!("{} min {:02} s", s / 60, s % 60),
+        _ => format!("{} h {:02} min", s / 3600, (s % 3600 + 30) / 60),
+    }
 }
 
 #[derive(Debug, Args)]
@@ -152,6 +295,23 @@ fn contact(args: &ContactArgs) -> Result<()> {
 
 #[derive(Debug, Args)]
 struct OpenLoopArgs {
+    #[command(flatten)]
+    protocol: OpenLoopProtocol,
+    /// Worker threads over (N, seed) runs. Wall-clock budgets are timed on a loaded machine when
+    /// this is above 1; the default is 1.
+    #[arg(long, default_value_t = 1)]
+    jobs: usize,
+    /// Output directory.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    #[command(flatten)]
+    sharding: ShardArgs,
+}
+
+/// Every flag of `open-loop` that changes a result: recorded in a shard's partial.
+#[derive(Debug, Args, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct OpenLoopProtocol {
     /// N = 500 only, 3 seeds x 60 frames: seconds.
     #[arg(long)]
     quick: bool,
@@ -168,10 +328,6 @@ struct OpenLoopArgs {
     /// Frames per run at every N (default 1,000 at N = 500, 200 at N = 10,000).
     #[arg(long)]
     frames: Option<u32>,
-    /// Worker threads over (N, seed) runs. Wall-clock budgets are timed on a loaded machine when
-    /// this is above 1; the default is 1.
-    #[arg(long, default_value_t = 1)]
-    jobs: usize,
     /// Settle every pair within 5 degrees of the fixation first in the priced scheduler's
     /// wall-clock frames (`SimConfig::fovea_first`).
     #[arg(long)]
@@ -180,51 +336,76 @@ struct OpenLoopArgs {
     /// (the paper's leaf-sphere overlap).
     #[arg(long, default_value = "shape")]
     truth: foveal_engine::Truth,
-    /// Output directory.
-    #[arg(long)]
-    out: Option<PathBuf>,
 }
 
 fn open_loop(args: &OpenLoopArgs) -> Result<()> {
-    use foveal_bench::open_loop as ol;
-    let mut cfg = match (args.grid, args.quick) {
-        (false, false) => ol::OpenLoopConfig::standard(),
-        (false, true) => ol::OpenLoopConfig::quick(),
-        (true, false) => ol::OpenLoopConfig::grid(),
-        (true, true) => {
-            let q = ol::OpenLoopConfig::quick();
-            ol::OpenLoopConfig {
-                ns: q.ns,
-                seeds: q.seeds,
-                frames: q.frames,
-                warmup: q.warmup,
-                timing_frames: q.timing_frames,
-                out: PathBuf::from("results/open-loop-grid-quick"),
-                ..ol::OpenLoopConfig::grid()
-            }
-        }
-    };
-    cfg.truth = args.truth;
-    if let Some(n) = &args.n {
-        cfg.ns = n.clone();
-    }
-    if let Some(s) = args.seeds {
-        cfg.seeds = (1..=s.max(1)).collect();
-    }
-    if let Some(f) = args.frames {
-        cfg.frames = cfg.ns.iter().map(|&n| (n, f.max(1))).collect();
-    }
+    let mut cfg = args.protocol.config();
     if let Some(o) = &args.out {
         cfg.out = o.clone();
     }
     cfg.jobs = args.jobs.max(1);
-    cfg.fovea_first = args.fovea_first;
-    let out = ol::run_and_write(&cfg).context("open-loop comparison failed")?;
+    if let Some(counts) = &args.sharding.plan {
+        print!(
+            "{}",
+            plan_markdown(
+                &foveal_bench::shard::open_loop_cells(&[&cfg]),
+                counts,
+                cfg.jobs
+            )
+        );
+        return Ok(());
+    }
+    if let Some(shard) = args.sharding.shard()? {
+        let protocol = serde_json::to_value(&args.protocol).context("recording the protocol")?;
+        let partial = foveal_bench::run_open_loop_shard(&cfg, shard, protocol)
+            .with_context(|| format!("shard {shard} of the open-loop comparison failed"))?;
+        let path = partial.write(&cfg.out)?;
+        eprintln!("{} cells in {:.1} s", partial.cells.len(), partial.wall_s.0);
+        println!("{}", path.display());
+        return Ok(());
+    }
+    let out =
+        foveal_bench::open_loop::run_and_write(&cfg).context("open-loop comparison failed")?;
     for f in &out.files {
         eprintln!("{}", f.display());
     }
     print!("{}", out.report);
     Ok(())
+}
+
+impl OpenLoopProtocol {
+    fn config(&self) -> foveal_bench::open_loop::OpenLoopConfig {
+        use foveal_bench::open_loop as ol;
+        let mut cfg = match (self.grid, self.quick) {
+            (false, false) => ol::OpenLoopConfig::standard(),
+            (false, true) => ol::OpenLoopConfig::quick(),
+            (true, false) => ol::OpenLoopConfig::grid(),
+            (true, true) => {
+                let q = ol::OpenLoopConfig::quick();
+                ol::OpenLoopConfig {
+                    ns: q.ns,
+                    seeds: q.seeds,
+                    frames: q.frames,
+                    warmup: q.warmup,
+                    timing_frames: q.timing_frames,
+                    out: PathBuf::from("results/open-loop-grid-quick"),
+                    ..ol::OpenLoopConfig::grid()
+                }
+            }
+        };
+        cfg.truth = self.truth;
+        if let Some(n) = &self.n {
+            cfg.ns = n.clone();
+        }
+        if let Some(s) = self.seeds {
+            cfg.seeds = (1..=s.max(1)).collect();
+        }
+        if let Some(f) = self.frames {
+            cfg.frames = cfg.ns.iter().map(|&n| (n, f.max(1))).collect();
+        }
+        cfg.fovea_first = self.fovea_first;
+        cfg
+    }
 }
 
 #[derive(Debug, Args)]
@@ -391,9 +572,75 @@ fn stress(args: &StressArgs) -> Result<()> {
 
 #[derive(Debug, Args)]
 struct StudyArgs {
-    /// Small protocol (N = paper values, 50 frames, 3 seeds; curves at N = 300, 30 frames): seconds.
+    #[command(flatten)]
+    protocol: StudyProtocol,
+    /// Output directory.
     #[arg(long)]
+    out: Option<PathBuf>,
+    /// Worker threads for the budget sweep and the open loop (deterministic budgets; the table
+    /// always uses one).
+    #[arg(long)]
+    jobs: Option<usize>,
+    /// Do not write per-frame CSVs.
+    #[arg(long)]
+    no_frames: bool,
+    #[command(flatten)]
+    sharding: ShardArgs,
+    /// Instead of the study, re-run this recorded session (`foveal-server --record FILE`):
+    /// closed loop bit for bit, then open loop under every scheduler (as `replay FILE`).
+    #[arg(long)]
+    session: Option<PathBuf>,
+    #[command(flatten)]
+    session_options: SessionOptions,
+}
+
+/// Which share of a protocol's cells this process runs (`study`, `open-loop`).
+#[derive(Debug, Args)]
+struct ShardArgs {
+    /// Run shard I of N (0 <= I < N) and write its partial result into the output directory
+    /// (`shard-I-of-N.partial.json`) for `foveal-bench merge`. Without it, the index comes from
+    /// JOB_COMPLETION_INDEX (Kubernetes indexed Job) or SLURM_ARRAY_TASK_ID (Slurm array, less
+    /// SLURM_ARRAY_TASK_MIN), the count from --shards or SLURM_ARRAY_TASK_COUNT.
+    #[arg(long, value_parser = parse_shard)]
+    shard: Option<Shard>,
+    /// Number of shards when the index comes from the environment.
+    #[arg(long, env = "FOVEAL_SHARDS")]
+    shards: Option<u64>,
+    /// Print, for each of these shard counts, the estimated wall time of the slowest shard, its
+    /// share of all the work and the cells per shard, then exit without running anything.
+    #[arg(long, value_delimiter = ',')]
+    plan: Option<Vec<u32>>,
+}
+
+impl ShardArgs {
+    /// The shard to run: `--shard`, else from a scheduler's environment; `None` is the whole run.
+    fn shard(&self) -> Result<Option<Shard>> {
+        if let Some(s) = self.shard {
+            if let Some(n) = self.shards.filter(|&n| n != u64::from(s.count)) {
+                bail!("--shard {s} and --shards {n} disagree on the number of shards");
+            }
+            return Ok(Some(s));
+        }
+        Ok(Shard::from_env(self.shards, |k| std::env::var(k).ok())?)
+    }
+}
+
+fn parse_shard(s: &str) -> Result<Shard, String> {
+    Shard::parse(s).map_err(|e| e.to_string())
+}
+
+/// Every flag of `study` that changes a result: recorded in a shard's partial, from which
+/// `merge` rebuilds the protocol.
+#[derive(Debug, Args, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct StudyProtocol {
+    /// Small protocol (N = paper values, 50 frames, 3 seeds; curves at N = 300, 30 frames): seconds.
+    #[arg(long, conflicts_with = "tiny")]
     quick: bool,
+    /// Tiny protocol (N = 10 and 30, 6 frames, 2 seeds; curves at N = 30; open loop and grid at
+    /// N = 150, 4 frames): about a second; what CI shards and merges.
+    #[arg(long)]
+    tiny: bool,
     /// Run only the budget sweep (true P against budget per scheduler) instead of the table.
     #[arg(long, conflicts_with = "with_curves")]
     curves: bool,
@@ -441,39 +688,40 @@ struct StudyArgs {
     /// (the paper's leaf-sphere overlap, for the replication).
     #[arg(long, default_value = "shape")]
     truth: foveal_engine::Truth,
-    /// Output directory.
-    #[arg(long)]
-    out: Option<PathBuf>,
     /// Unrecorded warm-up frames before every run and before calibration (default 60).
     #[arg(long)]
     warmup: Option<u32>,
     /// Exact frames (after warm-up) measuring the exact narrow-phase cost (default 60).
     #[arg(long)]
     calibration_frames: Option<u32>,
-    /// Worker threads for the budget sweep (deterministic budgets; the table always uses one).
-    #[arg(long)]
-    jobs: Option<usize>,
-    /// Do not write per-frame CSVs.
-    #[arg(long)]
-    no_frames: bool,
     /// Skip the open-loop comparison of schedulers (identical frames, clairvoyant bound).
     #[arg(long)]
     no_open_loop: bool,
     /// Skip the sensitivity grid (run with the open-loop part on its frames; see `open-loop --grid`).
     #[arg(long)]
     no_grid: bool,
-    /// Instead of the study, re-run this recorded session (`foveal-server --record FILE`):
-    /// closed loop bit for bit, then open loop under every scheduler (as `replay FILE`).
-    #[arg(long)]
-    session: Option<PathBuf>,
-    #[command(flatten)]
-    session_options: SessionOptions,
 }
 
 impl StudyArgs {
     fn config(&self) -> Result<StudyConfig> {
+        let mut c = self.protocol.config()?;
+        if let Some(o) = &self.out {
+            c.out = o.clone();
+        }
+        if let Some(j) = self.jobs {
+            c.jobs = j.max(1);
+        }
+        c.frame_csv = !self.no_frames;
+        Ok(c)
+    }
+}
+
+impl StudyProtocol {
+    fn config(&self) -> Result<StudyConfig> {
         let mut c = if self.quick {
             StudyConfig::quick()
+        } else if self.tiny {
+            StudyConfig::tiny()
         } else {
             StudyConfig::default()
         };
@@ -508,7 +756,7 @@ impl StudyArgs {
         if self.curves || self.with_curves {
             c.curves.get_or_insert_with(CurvesConfig::default);
             c.table = !self.curves;
-        } else if !self.quick {
+        } else if !self.quick && !self.tiny {
             c.curves = None;
         }
         if let Some(curves) = c.curves.as_mut() {
@@ -541,19 +789,12 @@ impl StudyArgs {
         if let Some(p) = &self.gaze_csv {
             c.gaze = GazeSpec::Csv(p.clone());
         }
-        if let Some(o) = &self.out {
-            c.out = o.clone();
-        }
         if let Some(w) = self.warmup {
             c.warmup_frames = w;
         }
         if let Some(k) = self.calibration_frames {
             c.calibration_frames = k.max(1);
         }
-        if let Some(j) = self.jobs {
-            c.jobs = j.max(1);
-        }
-        c.frame_csv = !self.no_frames;
         Ok(c)
     }
 }
@@ -563,6 +804,20 @@ fn study(args: &StudyArgs) -> Result<()> {
         return replay(file, &args.session_options);
     }
     let cfg = args.config()?;
+    if let Some(counts) = &args.sharding.plan {
+        print!("{}", plan_markdown(&cfg.cells(), counts, cfg.jobs));
+        return Ok(());
+    }
+    if let Some(shard) = args.sharding.shard()? {
+        let protocol = serde_json::to_value(&args.protocol).context("recording the protocol")?;
+        eprintln!("foveal-bench study: shard {shard} -> {}", cfg.out.display());
+        let partial = foveal_bench::run_study_shard(&cfg, shard, protocol)
+            .with_context(|| format!("shard {shard} of the study failed"))?;
+        let path = partial.write(&cfg.out)?;
+        eprintln!("{} cells in {:.1} s", partial.cells.len(), partial.wall_s.0);
+        println!("{}", path.display());
+        return Ok(());
+    }
     let plan = cfg.plan();
     eprintln!(
         "foveal-bench study: {} runs, {} frames -> {}",
@@ -689,6 +944,7 @@ fn main() -> Result<()> {
         Command::Contact(args) => contact(args),
         Command::ShapeCheck(args) => shape_check(args),
         Command::Replay(args) => replay(&args.file, &args.options),
+        Command::Merge(args) => merge(args),
     }
 }
 

@@ -402,7 +402,8 @@ impl OpenLoopConfig {
         }
     }
 
-    fn frames_for(&self, n: u32) -> u32 {
+    /// Recorded frames per run at `n`.
+    pub fn frames_for(&self, n: u32) -> u32 {
         self.frames
             .iter()
             .find(|(m, _)| *m == n)
@@ -413,10 +414,10 @@ impl OpenLoopConfig {
 
 /// Sums over the frames of one run for one (condition, budget, scheduler).
 #[derive(Debug, Clone, Copy, Default)]
-struct Cell {
-    true_p: f64,
-    tests: f64,
-    prioritise_ms: f64,
+pub(crate) struct Cell {
+    pub(crate) true_p: f64,
+    pub(crate) tests: f64,
+    pub(crate) prioritise_ms: f64,
 }
 
 /// Per-run result: mean per frame of every cell, the bound and all-deemed P.
@@ -440,11 +441,11 @@ pub struct RunResult {
     /// Mean exact cost (sphere tests per frame).
     pub exact_tests: f64,
     /// `[condition][budget][scheduler]`: (mean true P, mean tests, mean prioritise ms).
-    cells: Vec<Vec<Vec<Cell>>>,
+    pub(crate) cells: Vec<Vec<Vec<Cell>>>,
     /// `[condition][budget]`: mean bound.
-    bound: Vec<Vec<f64>>,
+    pub(crate) bound: Vec<Vec<f64>>,
     /// `[condition]`: mean true P with every pair deemed.
-    all_deemed: Vec<f64>,
+    pub(crate) all_deemed: Vec<f64>,
     /// `[condition]`: frames counted (fewer than `frames` under saccadic suppression).
     pub counted: Vec<u32>,
 }
@@ -551,6 +552,44 @@ struct ScheduleRun {
     collider: Collider,
     /// The (part, condition, budget, scheduler) cells this run serves.
     cells: Vec<(usize, usize, usize, usize)>,
+}
+
+/// How many distinct scheduling runs every frame of parts run together makes (cells that would
+/// schedule identically share one, as in [`run_frames_parts`]): the work of a frame beside its
+/// exact step and truths, which a sharded run's cost estimate counts.
+pub fn schedule_runs(parts: &[&OpenLoopConfig]) -> usize {
+    let mut budgets: Vec<Budget> = Vec::new();
+    let mut keys: Vec<(
+        usize,
+        SchedulerKind,
+        PricedOptions,
+        Option<f64>,
+        PerceptualModel,
+        GazeFeed,
+    )> = Vec::new();
+    for p in parts {
+        for c in &p.conditions {
+            for b in &p.budgets {
+                let ub = index_of(&mut budgets, *b);
+                for spec in &c.schedulers {
+                    let blind = matches!(
+                        spec.kind,
+                        SchedulerKind::RoundRobin | SchedulerKind::Sequential
+                    );
+                    let (model, feed) = if blind {
+                        (PerceptualModel::default(), GazeFeed::Viewer)
+                    } else {
+                        (c.schedule_model, c.feed)
+                    };
+                    index_of(
+                        &mut keys,
+                        (ub, spec.kind, spec.priced, spec.threshold_deg, model, feed),
+                    );
+                }
+            }
+        }
+    }
+    keys.len()
 }
 
 /// Run one (N, seed) of the paper scene, the scripted viewer looking.
@@ -989,25 +1028,51 @@ pub fn run_parts(parts: &[&OpenLoopConfig]) -> Result<Vec<Vec<RunResult>>, Bench
             "parts run on the same frames must agree on N and seeds".into(),
         ));
     }
-    let plan: Vec<(u32, u64)> = cfg
-        .ns
+    run_parts_on(parts, &cells(cfg))
+}
+
+/// Every (N, seed) run of `cfg`, in (N, seed) order: the cells a sharded run distributes.
+pub fn cells(cfg: &OpenLoopConfig) -> Vec<(u32, u64)> {
+    cfg.ns
         .iter()
         .flat_map(|&n| cfg.seeds.iter().map(move |&s| (n, s)))
-        .collect();
+        .collect()
+}
+
+/// [`run_parts`] on the (N, seed) runs of `plan` only (a shard's share): per part, the results in
+/// `plan` order. The parts must agree on frames, warm-up and timing frames.
+pub fn run_parts_on(
+    parts: &[&OpenLoopConfig],
+    plan: &[(u32, u64)],
+) -> Result<Vec<Vec<RunResult>>, BenchError> {
+    run_parts_timed_on(parts, plan).map(|(r, _)| r)
+}
+
+/// [`run_parts_on`], with each (N, seed) run's wall time (s, in `plan` order): a shard records
+/// what its cells cost, which is what the cost estimate of a sharded run is fitted to.
+pub fn run_parts_timed_on(
+    parts: &[&OpenLoopConfig],
+    plan: &[(u32, u64)],
+) -> Result<(Vec<Vec<RunResult>>, Vec<f64>), BenchError> {
+    let Some(&cfg) = parts.first() else {
+        return Ok((Vec::new(), Vec::new()));
+    };
     // Largest N first, so the short runs fill in behind the long ones on the other threads.
     let mut order: Vec<usize> = (0..plan.len()).collect();
     order.sort_by_key(|&k| std::cmp::Reverse(plan[k].0));
     let next = AtomicUsize::new(0);
-    type Slot = (usize, Result<Vec<RunResult>, BenchError>);
+    type Slot = (usize, Result<Vec<RunResult>, BenchError>, f64);
     let results: Mutex<Vec<Slot>> = Mutex::new(Vec::new());
     std::thread::scope(|scope| {
         for _ in 0..cfg.jobs.clamp(1, plan.len().max(1)) {
             scope.spawn(|| {
                 while let Some(&k) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
                     let (n, seed) = plan[k];
+                    let started = std::time::Instant::now();
                     let r = run_one_parts(parts, n, seed);
+                    let wall_s = started.elapsed().as_secs_f64();
                     if let Ok(mut v) = results.lock() {
-                        v.push((k, r));
+                        v.push((k, r, wall_s));
                     }
                 }
             });
@@ -1016,14 +1081,16 @@ pub fn run_parts(parts: &[&OpenLoopConfig]) -> Result<Vec<Vec<RunResult>>, Bench
     let mut results = results
         .into_inner()
         .map_err(|_| BenchError::Invalid("a worker thread panicked".into()))?;
-    results.sort_by_key(|(k, _)| *k);
+    results.sort_by_key(|(k, _, _)| *k);
     let mut per_part: Vec<Vec<RunResult>> = parts.iter().map(|_| Vec::new()).collect();
-    for (_, r) in results {
+    let mut walls = Vec::with_capacity(results.len());
+    for (_, r, wall_s) in results {
         for (pi, run) in r?.into_iter().enumerate() {
             per_part[pi].push(run);
         }
+        walls.push(wall_s);
     }
-    Ok(per_part)
+    Ok((per_part, walls))
 }
 
 /// One row of the summary: a scheduler in a condition at a budget, across seeds.
@@ -1194,17 +1261,52 @@ pub fn run_and_write(cfg: &OpenLoopConfig) -> Result<OpenLoopOutput, BenchError>
 /// [`run_and_write`] for several parts run on the same frames ([`run_parts`]), each written under
 /// its own `out`; every report carries the load average and the wall time of the whole run.
 pub fn run_and_write_parts(parts: &[&OpenLoopConfig]) -> Result<Vec<OpenLoopOutput>, BenchError> {
-    let load = || {
-        std::fs::read_to_string("/proc/loadavg")
-            .map(|s| s.trim().to_string())
-            .unwrap_or_else(|_| "unknown".into())
-    };
-    let load_start = load();
+    let load_start = load_average();
     let started = std::time::Instant::now();
     let all = run_parts(parts)?;
-    let (load_end, wall_s) = (load(), started.elapsed().as_secs_f64());
+    let stamp = RunStamp {
+        load_start,
+        load_end: load_average(),
+        wall_s: started.elapsed().as_secs_f64(),
+    };
+    write_parts(parts, &all, &stamp)
+}
+
+/// The machine's load average as `/proc/loadavg` gives it (`unknown` elsewhere): reports stamp
+/// their wall-clock figures with it, since a loaded machine moves them.
+pub fn load_average() -> String {
+    std::fs::read_to_string("/proc/loadavg")
+        .map(|s| s.trim().to_string())
+        .unwrap_or_else(|_| "unknown".into())
+}
+
+/// When and how long the runs behind a report ran: the load average at start and end and the
+/// wall time (s). A merged report lists the shards' own, joined by ` / `.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunStamp {
+    /// Load average when the runs started.
+    pub load_start: String,
+    /// Load average when they ended.
+    pub load_end: String,
+    /// Wall time of the runs (s; for several shards, the slowest one's).
+    pub wall_s: f64,
+}
+
+/// Write each part's CSVs, report and figures under its own `out` from its results `all[p]`
+/// (as [`run_parts`] returns them); the reports end with `stamp`. A sharded run's merge calls
+/// this with the results gathered from every shard, so its files are those of one run.
+pub fn write_parts(
+    parts: &[&OpenLoopConfig],
+    all: &[Vec<RunResult>],
+    stamp: &RunStamp,
+) -> Result<Vec<OpenLoopOutput>, BenchError> {
+    let RunStamp {
+        load_start,
+        load_end,
+        wall_s,
+    } = stamp;
     let mut outputs = Vec::new();
-    for (cfg, runs) in parts.iter().zip(&all) {
+    for (cfg, runs) in parts.iter().zip(all) {
         let rows = summarise(cfg, runs);
         let shared = if parts.len() > 1 {
             format!(" ({} parts on the same frames)", parts.len())

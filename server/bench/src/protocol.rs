@@ -16,7 +16,7 @@
 
 use std::path::PathBuf;
 
-use crate::open_loop::OpenLoopConfig;
+use crate::open_loop::{Budget, OpenLoopConfig};
 
 use foveal_engine::{
     BudgetSpec, EccentricityUnit, PerceptualFunction, PerceptualModel, SceneConfig, SchedulerKind,
@@ -280,6 +280,42 @@ impl StudyConfig {
             warmup_frames: 20,
             jobs: 2,
             out: PathBuf::from("target/foveal-bench/quick"),
+            ..Self::default()
+        }
+    }
+
+    /// The `--tiny` preset: every part and output of the protocol at N = 10 and 30 (curves at 30,
+    /// the open loop and its grid at N = 150), 2 seeds of a few frames, every mode and scheduler:
+    /// about a second in a test build. CI runs it whole and sharded and compares the two.
+    pub fn tiny() -> Self {
+        let mut ol = OpenLoopConfig::quick();
+        ol.ns = vec![150];
+        ol.seeds = vec![1, 2];
+        ol.frames = vec![(150, 4)];
+        ol.warmup = 5;
+        ol.timing_frames = 2;
+        ol.budgets = vec![Budget::Tests(0.05), Budget::Tests(0.3)];
+        ol.conditions.truncate(1);
+        let mut grid = OpenLoopConfig::grid();
+        grid.budgets = vec![Budget::Tests(0.3)];
+        grid.conditions.truncate(2);
+        Self {
+            ns: vec![10, 30],
+            frames: 6,
+            seeds: vec![1, 2],
+            fractions: vec![0.1],
+            tests_budgets: vec![200],
+            curves: Some(CurvesConfig {
+                ns: vec![30],
+                frames: 4,
+                fractions: vec![0.05, 0.5],
+            }),
+            open_loop: Some(ol),
+            grid: Some(grid),
+            calibration_frames: 3,
+            warmup_frames: 2,
+            jobs: 2,
+            out: PathBuf::from("target/foveal-bench/tiny"),
             ..Self::default()
         }
     }

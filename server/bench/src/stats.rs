@@ -22,6 +22,17 @@ impl Accum {
         self.m2 += d * (x - self.mean);
     }
 
+    /// The running state (count, mean, sum of squared deviations), written into a shard's
+    /// partial result so that a merge rebuilds the summary bit for bit.
+    pub fn raw(&self) -> (u64, f64, f64) {
+        (self.n, self.mean, self.m2)
+    }
+
+    /// The accumulator whose running state is `(n, mean, m2)` (see [`Self::raw`]).
+    pub fn from_raw(n: u64, mean: f64, m2: f64) -> Self {
+        Self { n, mean, m2 }
+    }
+
     /// Observations counted.
     pub fn count(&self) -> u64 {
         self.n
