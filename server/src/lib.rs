@@ -274,7 +274,9 @@ pub async fn run_with_health(
     // Err: the health port already ended.
     let _ = health_stop.send(());
     if let Some(h) = health_port
-        && tokio::time::timeout(transport::SHUTDOWN_LINGER, h).await.is_err()
+        && tokio::time::timeout(transport::SHUTDOWN_LINGER, h)
+            .await
+            .is_err()
     {
         tracing::info!("abandoning probes still connected to the health port");
     }
