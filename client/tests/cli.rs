@@ -408,6 +408,11 @@ async fn a_csv_file_is_paced_at_its_own_rate_and_unpaced_sending_is_warned_about
             && stderr.contains("1200 samples at 1000 Hz will mostly be dropped"),
         "{stderr}"
     );
+    // A log read from a pipe or a file carries no colour codes.
+    assert!(
+        !stderr.contains('\u{1b}'),
+        "colour codes off a terminal: {stderr:?}"
+    );
     assert!(stdout.contains("rate-limited"), "{stdout}");
     server.stop().await.expect("clean stop");
     let _ = std::fs::remove_file(paced);
