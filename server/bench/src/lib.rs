@@ -426,24 +426,10 @@ pub fn run_study_shard(
     protocol: serde_json::Value,
 ) -> Result<Partial, BenchError> {
     cfg.validate()?;
-    let load_start = open_loop::load_average();
-    let started = std::time::Instant::now();
     let parts = cfg.open_loop_parts();
     let refs: Vec<&open_loop::OpenLoopConfig> = parts.iter().collect();
-    let (cells, closed_loop, open_loop) = run_cells(Some(cfg), &refs, &cfg.cells(), shard)?;
-    Ok(Partial {
-        format: shard::PARTIAL_FORMAT.into(),
-        command: "study".into(),
-        protocol,
-        protocol_hash: cfg.protocol_hash(),
-        engine_hash: shard::ENGINE_SOURCE_HASH.into(),
-        shard,
-        cells,
-        closed_loop,
-        open_loop,
-        load_start,
-        load_end: open_loop::load_average(),
-        wall_s: Num(started.elapsed().as_secs_f64()),
+    timed_partial("study", protocol, cfg.protocol_hash(), shard, || {
+        run_cells(Some(cfg), &refs, &cfg.cells(), shard)
     })
 }
 
@@ -453,16 +439,33 @@ pub fn run_open_loop_shard(
     shard: Shard,
     protocol: serde_json::Value,
 ) -> Result<Partial, BenchError> {
+    let parts = [cfg];
+    timed_partial(
+        "open-loop",
+        protocol,
+        open_loop_protocol_hash(cfg),
+        shard,
+        || run_cells(None, &parts, &shard::open_loop_cells(&parts), shard),
+    )
+}
+
+/// The partial of `command`'s shard `shard`: `run` timed, with the load average before and
+/// after it.
+fn timed_partial(
+    command: &str,
+    protocol: serde_json::Value,
+    protocol_hash: String,
+    shard: Shard,
+    run: impl FnOnce() -> Result<ShardRecords, BenchError>,
+) -> Result<Partial, BenchError> {
     let load_start = open_loop::load_average();
     let started = std::time::Instant::now();
-    let parts = [cfg];
-    let (cells, closed_loop, open_loop) =
-        run_cells(None, &parts, &shard::open_loop_cells(&parts), shard)?;
+    let (cells, closed_loop, open_loop) = run()?;
     Ok(Partial {
         format: shard::PARTIAL_FORMAT.into(),
-        command: "open-loop".into(),
+        command: command.into(),
         protocol,
-        protocol_hash: open_loop_protocol_hash(cfg),
+        protocol_hash,
         engine_hash: shard::ENGINE_SOURCE_HASH.into(),
         shard,
         cells,
