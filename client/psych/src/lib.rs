@@ -26,6 +26,7 @@
 //! - [`fit`]: maximum-likelihood fits (Nelder-Mead, from `argmin`) with several starts.
 //! - [`bootstrap`]: percentile intervals by refitting resampled trials.
 //! - [`compare`]: cross-validated likelihood of competing functions.
+//! - [`plot`]: the fit drawn (SVG): proportions with intervals and the fitted curves.
 //! - [`report`]: fits of F1, F2 and F3 pooled and per participant, as markdown.
 //! - [`simulate`]: simulated observers with a known function, for tests and coverage runs.
 //! - [`rng`]: the deterministic generator the resampling and simulations draw from.
@@ -42,6 +43,7 @@ pub mod bootstrap;
 pub mod compare;
 pub mod fit;
 pub mod model;
+pub mod plot;
 pub mod report;
 pub mod rng;
 pub mod simulate;
