@@ -25,6 +25,8 @@
 //!   reference list.
 //! - [`watch`]: subscribes to frames, prints a summary line per second, writes frame metrics as CSV.
 //! - [`health`]: the standard gRPC health check.
+//! - [`commands`]: the `foveal` subcommands, one call each, that the binary parses its arguments
+//!   into: what `gaze` and `bridge` send, the server they talk to, how each ends.
 
 use std::time::Duration;
 
@@ -36,6 +38,7 @@ use tonic::service::interceptor::InterceptedService;
 use tonic::transport::{Certificate, Channel, ClientTlsConfig, Endpoint};
 
 pub mod bridge;
+pub mod commands;
 pub mod fixations;
 pub use foveal_gaze as gaze;
 pub mod health;
