@@ -166,19 +166,7 @@ impl GazeInput {
     pub fn open(self) -> Result<OpenedInput, CommandError> {
         let opened = |name: String, source, pace| OpenedInput { name, source, pace };
         Ok(match self {
-            Self::Script { script, rate_hz } => {
-                let name = match script {
-                    GazeScript::Fixed { .. } => "fixed",
-                    GazeScript::Circle { .. } => "circle",
-                    GazeScript::Saccades { .. } => "saccades",
-                };
-                let gaze = ScriptedGaze::new(script, rate_hz)?;
-                opened(
-                    format!("script:{name}"),
-                    source::script(gaze),
-                    Pace::REAL_TIME,
-                )
-            }
+            Self::Script { script, rate_hz } => open_script(script, rate_hz)?,
             Self::Replay {
                 file,
                 speed,
@@ -201,33 +189,7 @@ impl GazeInput {
                 as_fast_as_possible,
                 screen,
                 eyes,
-            } => {
-                let speed = speed
-                    .map(|s| Pace::scaled(s).map_err(CommandError::Usage))
-                    .transpose()?;
-                match file.as_deref().filter(|p| p.as_os_str() != "-") {
-                    // Live lines: sent as they arrive unless a speed is given.
-                    None => opened(
-                        "bridge:csv:stdin".to_owned(),
-                        source::stdin_csv(screen, eyes),
-                        speed.unwrap_or(Pace::AsFastAsPossible),
-                    ),
-                    Some(path) => {
-                        let pace = match (speed, as_fast_as_possible) {
-                            (Some(pace), _) => pace,
-                            (None, true) => Pace::AsFastAsPossible,
-                            (None, false) => Pace::REAL_TIME,
-                        };
-                        let options = ReadOptions {
-                            format: Some(RecordingFormat::Csv),
-                            screen,
-                            eyes,
-                        };
-                        let (_, rx) = open_recording(path, options, pace)?;
-                        opened(format!("bridge:csv:{}", path.display()), rx, pace)
-                    }
-                }
-            }
+            } => open_csv(file, speed, as_fast_as_possible, screen, eyes)?,
             Self::Asc {
                 file,
                 speed,
@@ -267,6 +229,59 @@ impl GazeInput {
             }
         })
     }
+}
+
+/// Scripted gaze, in real time.
+fn open_script(script: GazeScript, rate_hz: f64) -> Result<OpenedInput, CommandError> {
+    let name = match script {
+        GazeScript::Fixed { .. } => "fixed",
+        GazeScript::Circle { .. } => "circle",
+        GazeScript::Saccades { .. } => "saccades",
+    };
+    let gaze = ScriptedGaze::new(script, rate_hz)?;
+    Ok(OpenedInput {
+        name: format!("script:{name}"),
+        source: source::script(gaze),
+        pace: Pace::REAL_TIME,
+    })
+}
+
+/// CSV gaze: a file at its own pace unless `speed` or `as_fast_as_possible` say otherwise, or
+/// (no file, or `-`) the lines of stdin as they arrive unless `speed` paces them.
+fn open_csv(
+    file: Option<PathBuf>,
+    speed: Option<f64>,
+    as_fast_as_possible: bool,
+    screen: Option<ScreenPx>,
+    eyes: Binocular,
+) -> Result<OpenedInput, CommandError> {
+    let speed = speed
+        .map(|s| Pace::scaled(s).map_err(CommandError::Usage))
+        .transpose()?;
+    let Some(path) = file.as_deref().filter(|p| p.as_os_str() != "-") else {
+        // Live lines: sent as they arrive unless a speed is given.
+        return Ok(OpenedInput {
+            name: "bridge:csv:stdin".to_owned(),
+            source: source::stdin_csv(screen, eyes),
+            pace: speed.unwrap_or(Pace::AsFastAsPossible),
+        });
+    };
+    let pace = match (speed, as_fast_as_possible) {
+        (Some(pace), _) => pace,
+        (None, true) => Pace::AsFastAsPossible,
+        (None, false) => Pace::REAL_TIME,
+    };
+    let options = ReadOptions {
+        format: Some(RecordingFormat::Csv),
+        screen,
+        eyes,
+    };
+    let (_, source) = open_recording(path, options, pace)?;
+    Ok(OpenedInput {
+        name: format!("bridge:csv:{}", path.display()),
+        source,
+        pace,
+    })
 }
 
 impl PupilInput {
