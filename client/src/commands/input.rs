@@ -157,8 +157,9 @@ pub struct OpenedInput {
 }
 
 impl GazeInput {
-    /// Checks the input's parameters and opens it; a recording is looked ahead into first (see
-    /// [`open_recording`]).
+    /// Checks the input's parameters and opens it. A recording is looked ahead into first: one
+    /// with nothing to send is an error, an eye it does not have and a pace over a server's
+    /// default gaze rate limit are warned about, before anything is sent.
     ///
     /// # Errors
     /// [`CommandError::Usage`] for parameters that cannot work, [`CommandError::Script`],
