@@ -25,6 +25,10 @@
 //!   reference list.
 //! - [`watch`]: subscribes to frames, prints a summary line per second, writes frame metrics as CSV.
 //! - [`health`]: the standard gRPC health check.
+//! - [`cli`]: the `foveal` command line (clap): its subcommands and flags, and the [`commands`]
+//!   they describe.
+//! - [`commands`]: the `foveal` subcommands, one call each, that the binary parses its arguments
+//!   into: what `gaze` and `bridge` send, the server they talk to, how each ends.
 
 use std::time::Duration;
 
@@ -36,6 +40,8 @@ use tonic::service::interceptor::InterceptedService;
 use tonic::transport::{Certificate, Channel, ClientTlsConfig, Endpoint};
 
 pub mod bridge;
+pub mod cli;
+pub mod commands;
 pub mod fixations;
 pub use foveal_gaze as gaze;
 pub mod health;

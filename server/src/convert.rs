@@ -12,7 +12,7 @@ use foveal_engine::{
 };
 use foveal_proto::pb;
 
-use crate::fixation_cell::ResolvedFixation;
+use crate::fixation_cell::{FixationSource, ResolvedFixation};
 
 fn invalid(field: &'static str, value: impl ToString, expected: impl Into<String>) -> ConfigError {
     ConfigError {
@@ -515,7 +515,7 @@ pub fn fixation_to_pb(f: &ResolvedFixation) -> pb::Fixation {
         x: f.fixation.x,
         y: f.fixation.y,
         age_s: f.fixation.age_s,
-        source: f.source as i32,
+        source: fixation_source_to_pb(f.source) as i32,
         raw: f.raw.map(|r| pb::RawGaze {
             x: r.x,
             y: r.y,
@@ -524,6 +524,16 @@ pub fn fixation_to_pb(f: &ResolvedFixation) -> pb::Fixation {
         }),
         track: gaze_track_to_pb(f.track) as i32,
         widen_deg: f.widen_deg,
+    }
+}
+
+/// The protocol's name for where a frame's fixation came from.
+pub fn fixation_source_to_pb(source: FixationSource) -> pb::FixationSource {
+    match source {
+        FixationSource::Gaze => pb::FixationSource::Gaze,
+        FixationSource::FallbackNoGaze => pb::FixationSource::FallbackNoGaze,
+        FixationSource::FallbackStale => pb::FixationSource::FallbackStale,
+        FixationSource::FallbackTrackLost => pb::FixationSource::FallbackTrackLost,
     }
 }
 
@@ -558,7 +568,7 @@ pub fn fixation_used(r: &FrameReport, resolved: &ResolvedFixation) -> pb::Fixati
             x: crate::fixation_cell::FALLBACK.0,
             y: crate::fixation_cell::FALLBACK.1,
             age_s: 0.0,
-            source: pb::FixationSource::FallbackNoGaze as i32,
+            source: fixation_source_to_pb(FixationSource::FallbackNoGaze) as i32,
             widen_deg: 0.0,
             ..base
         },
@@ -615,6 +625,25 @@ pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &pb::Fixation) -> pb::
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fixation_sources_keep_their_wire_values_and_recorded_names() {
+        for (source, wire, recorded) in [
+            (FixationSource::Gaze, 1, "gaze"),
+            (FixationSource::FallbackNoGaze, 2, "fallback_no_gaze"),
+            (FixationSource::FallbackStale, 3, "fallback_stale"),
+            (FixationSource::FallbackTrackLost, 4, "fallback_track_lost"),
+        ] {
+            let pb_source = fixation_source_to_pb(source);
+            assert_eq!(pb_source as i32, wire, "{source:?}");
+            assert_eq!(source.name(), recorded, "{source:?}");
+            assert_eq!(
+                pb_source.as_str_name(),
+                format!("FIXATION_SOURCE_{}", recorded.to_uppercase()),
+                "a recorded name is the protocol's"
+            );
+        }
+    }
 
     #[test]
     fn config_round_trips_and_empty_request_keeps_everything() {

@@ -24,7 +24,6 @@ use foveal_engine::Fixation;
 use foveal_gaze::GazeSample;
 use foveal_gaze::geometry::ViewingGeometry;
 use foveal_gaze::online::{GazeProcessor, GazeState, ProcessorConfig, Track};
-use foveal_proto::pb::FixationSource;
 
 /// Where the fixation goes when gaze is missing or stale: the screen centre.
 pub const FALLBACK: (f64, f64) = (0.5, 0.5);
@@ -44,6 +43,32 @@ pub fn viewing_geometry(display: &foveal_engine::Display) -> ViewingGeometry {
         width_cm: diagonal_cm * w / w.hypot(h),
         height_cm: diagonal_cm * h / w.hypot(h),
         distance_cm: display.viewing_distance_cm,
+    }
+}
+
+/// Where a frame's fixation comes from: gaze, or which fallback and why. The protocol's
+/// `FixationSource` is this, converted where a frame leaves the server (`convert`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FixationSource {
+    /// A live source's gaze.
+    Gaze,
+    /// The screen centre: no gaze has arrived.
+    FallbackNoGaze,
+    /// The screen centre: the newest gaze is older than the age limit.
+    FallbackStale,
+    /// The screen centre: the tracker reports the eye lost for too long.
+    FallbackTrackLost,
+}
+
+impl FixationSource {
+    /// The name a recorded session writes (`fixation_source`): part of the file format.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Gaze => "gaze",
+            Self::FallbackNoGaze => "fallback_no_gaze",
+            Self::FallbackStale => "fallback_stale",
+            Self::FallbackTrackLost => "fallback_track_lost",
+        }
     }
 }
 

@@ -21,17 +21,6 @@ pub const MAX_SOURCE_BYTES: usize = 64;
 /// How many rejections a response lists; the counts stay exact past it.
 pub const MAX_LISTED_REJECTIONS: usize = 32;
 
-/// A sample that passed validation and can become the fixation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct GazePoint {
-    /// Normalised horizontal position.
-    pub x: f64,
-    /// Normalised vertical position.
-    pub y: f64,
-    /// Tracker time (seconds, the tracker's clock).
-    pub tracker_time_s: f64,
-}
-
 /// Why a sample was not used (the field, the rule, the message).
 pub type Rejection = foveal_gaze::validate::Rejection;
 
@@ -70,19 +59,16 @@ impl GazeValidator {
         Self::default()
     }
 
-    /// Check the next sample of the source: `Ok` with the point to use, or the rejection (already
-    /// counted and, for the first [`MAX_LISTED_REJECTIONS`], listed).
-    pub fn check(&mut self, sample: &pb::GazeSample) -> Result<GazePoint, Rejection> {
+    /// Check the next sample of the source (converted once, at the rpc, by [`from_pb`]): `Ok`
+    /// when it can become the fixation, or the rejection (already counted and, for the first
+    /// [`MAX_LISTED_REJECTIONS`], listed).
+    pub fn check(&mut self, sample: &GazeSample) -> Result<(), Rejection> {
         let index = self.next_index;
         self.next_index += 1;
-        match self.rules.check(&from_pb(sample)) {
+        match self.rules.check(sample) {
             Ok(()) => {
-                self.last_accepted_time_s = sample.tracker_time_s;
-                Ok(GazePoint {
-                    x: sample.x,
-                    y: sample.y,
-                    tracker_time_s: sample.tracker_time_s,
-                })
+                self.last_accepted_time_s = sample.t_s;
+                Ok(())
             }
             Err(rejection) => {
                 if self.rejections.len() < MAX_LISTED_REJECTIONS {
@@ -181,17 +167,17 @@ pub fn check_source(source: &str) -> Result<(), String> {
 mod tests {
     use super::*;
 
-    fn s(t: f64, x: f64, y: f64, validity: f32) -> pb::GazeSample {
-        pb::GazeSample {
+    fn s(t: f64, x: f64, y: f64, validity: f32) -> GazeSample {
+        from_pb(&pb::GazeSample {
             tracker_time_s: t,
             x,
             y,
             validity,
             ..Default::default()
-        }
+        })
     }
 
-    fn field(r: Result<GazePoint, Rejection>) -> Option<&'static str> {
+    fn field(r: Result<(), Rejection>) -> Option<&'static str> {
         r.err().map(|r| r.field)
     }
 

@@ -20,7 +20,6 @@ use std::thread::JoinHandle;
 
 use foveal_engine::{FrameReport, SimConfig};
 use foveal_gaze::{Eye, GazeSample};
-use foveal_proto::pb::FixationSource;
 use foveal_session::{
     FrameRecord, GazeRecord, GazeSettings, Header, Record, SceneRecord, ServerSettings,
     SessionError, SessionWriter, Trailer,
@@ -150,7 +149,7 @@ impl Recorder {
             index,
             t_s,
             fixation: resolved.fixation,
-            fixation_source: source_name(resolved.source).to_owned(),
+            fixation_source: resolved.source.name().to_owned(),
             report: report.clone(),
         })));
     }
@@ -272,16 +271,6 @@ fn eye_name(eye: Eye) -> &'static str {
     }
 }
 
-fn source_name(s: FixationSource) -> &'static str {
-    match s {
-        FixationSource::Unspecified => "unspecified",
-        FixationSource::Gaze => "gaze",
-        FixationSource::FallbackNoGaze => "fallback_no_gaze",
-        FixationSource::FallbackStale => "fallback_stale",
-        FixationSource::FallbackTrackLost => "fallback_track_lost",
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use std::sync::Arc;
@@ -291,6 +280,7 @@ mod tests {
     use foveal_gaze::online::Track;
 
     use super::*;
+    use crate::fixation_cell::FixationSource;
 
     /// A shared byte sink whose writes wait, once `hold` is set, until `release` says go; it
     /// tells `entered` when a write starts waiting. A disk that has stalled, on demand.

@@ -128,9 +128,9 @@ impl pb::foveal_server::Foveal for FovealService {
                         self.shared.metrics.gaze_limited(1);
                         continue;
                     }
-                    match validator.check(&sample) {
-                        Ok(_) => {
-                            let s = gaze::from_pb(&sample);
+                    let s = gaze::from_pb(&sample);
+                    match validator.check(&s) {
+                        Ok(()) => {
                             self.record_gaze([&s], now, &key);
                             self.shared.fixation.push(&key, [&s], now);
                             self.shared.metrics.gaze(1, 0);
@@ -138,7 +138,6 @@ impl pb::foveal_server::Foveal for FovealService {
                         Err(r) => {
                             if r.kind == RejectKind::Missing {
                                 // A blink or track loss: not gaze, but the processing must know.
-                                let s = gaze::from_pb(&sample);
                                 self.record_gaze([&s], now, &key);
                                 self.shared.fixation.push(&key, [&s], now);
                             }
@@ -205,11 +204,11 @@ impl pb::foveal_server::Foveal for FovealService {
         // online processing in order, under one lock; samples over the rate limit are not read.
         let usable: Vec<_> = req.samples[dropped..]
             .iter()
+            .map(gaze::from_pb)
             .filter(|sample| match validator.check(sample) {
-                Ok(_) => true,
+                Ok(()) => true,
                 Err(r) => r.kind == RejectKind::Missing,
             })
-            .map(gaze::from_pb)
             .collect();
         if !usable.is_empty() {
             let key = SourceKey::Push(peer.map(|p| p.ip()), req.source.clone());
