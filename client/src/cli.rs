@@ -11,7 +11,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use crate::commands::{
     Detector, FixationsCommand, GazeInput, LoadCommand, LslInput, LslUnits, PupilInput,
-    SendOptions, Server, Speed, WatchCommand,
+    SendOptions, Server, Speed, WatchCommand, psych,
 };
 use crate::gaze::opengaze;
 use crate::gaze::script::GazeScript;
@@ -49,6 +49,151 @@ pub enum Command {
     /// Load the server with gaze streams and watchers (some never reading) and measure the loop:
     /// frame rate, step-time p99, samples sent versus accepted, server RSS over time.
     Load(LoadArgs),
+    /// Psychophysics: fit the perceptual functions F1, F2 and F3 to a viewer's responses, or
+    /// check the fit on simulated viewers.
+    #[command(subcommand)]
+    Psych(PsychCommand),
+}
+
+/// `foveal psych` subcommands.
+#[derive(Debug, Subcommand)]
+pub enum PsychCommand {
+    /// Fit F1, F2 and F3 by maximum likelihood to results CSVs (columns `participant`,
+    /// `eccentricity_deg`, `gap_deg`, `response` = apart|touching, optional `valid`), pooled and
+    /// per participant; print the report, F2's C with its bootstrap interval and the model
+    /// string `--schedule-model` takes.
+    Fit(PsychFitArgs),
+    /// Simulate viewers with a known F2 (400 trials each by default), fit each, and report how
+    /// often the fit recovers C within 20% and how often its 95% interval covers it; exit 1
+    /// when coverage is under 90%.
+    Simulate(PsychSimulateArgs),
+}
+
+/// Flags of `foveal psych fit`.
+#[derive(Debug, Args)]
+pub struct PsychFitArgs {
+    /// Results CSVs.
+    #[arg(required = true)]
+    results: Vec<PathBuf>,
+    /// Also write the report (fit.md), the figure (fit.svg) and the pooled F2 model string
+    /// (model.txt) in this directory.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Bootstrap replicates for F2's interval.
+    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(20..=100_000))]
+    replicates: u32,
+    /// Cross-validation folds.
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(2..=100))]
+    folds: u32,
+    /// Seed of the bootstrap and the folds.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// F3's breaks, E1,E2 in degrees (E1 < E2).
+    #[arg(long, default_value = "2.5,10", value_parser = parse_breaks)]
+    f3_breaks: (f64, f64),
+    /// Fit the pooled trials only, not each participant apart.
+    #[arg(long)]
+    pooled_only: bool,
+}
+
+fn parse_breaks(text: &str) -> Result<(f64, f64), String> {
+    let (a, b) = text
+        .split_once(',')
+        .ok_or_else(|| format!("{text:?} is not E1,E2"))?;
+    let number = |s: &str| {
+        s.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite() && *v >= 0.0)
+            .ok_or_else(|| format!("{s:?} is not a finite number of degrees >= 0"))
+    };
+    let (a, b) = (number(a)?, number(b)?);
+    if a >= b {
+        return Err(format!("E1 = {a} must be below E2 = {b}"));
+    }
+    Ok((a, b))
+}
+
+fn positive(text: &str) -> Result<f64, String> {
+    text.parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .ok_or_else(|| format!("{text:?} is not a finite number > 0"))
+}
+
+fn rate(text: &str) -> Result<f64, String> {
+    text.parse::<f64>()
+        .ok()
+        .filter(|v| (0.0..0.1).contains(v))
+        .ok_or_else(|| format!("{text:?} is not a rate in [0, 0.1)"))
+}
+
+/// Flags of `foveal psych simulate`.
+#[derive(Debug, Args)]
+pub struct PsychSimulateArgs {
+    /// The viewers' true C (degrees).
+    #[arg(long, default_value_t = 4.0, value_parser = positive)]
+    c: f64,
+    /// Their Weibull threshold α (degrees of gap).
+    #[arg(long, default_value_t = 0.05, value_parser = positive)]
+    alpha: f64,
+    /// Their Weibull slope β.
+    #[arg(long, default_value_t = 2.5, value_parser = positive)]
+    beta: f64,
+    /// Their guess (false-alarm) rate.
+    #[arg(long, default_value_t = 0.05, value_parser = rate)]
+    guess: f64,
+    /// Their lapse rate.
+    #[arg(long, default_value_t = 0.02, value_parser = rate)]
+    lapse: f64,
+    /// Viewers simulated.
+    #[arg(long, default_value_t = 50, value_parser = clap::value_parser!(u32).range(1..=10_000))]
+    observers: u32,
+    /// Repetitions of each cell of the design (5 eccentricities x 4 gaps, each with as many
+    /// touching trials): 10 makes 400 trials.
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=1_000))]
+    repetitions: u32,
+    /// Bootstrap replicates per viewer.
+    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(20..=100_000))]
+    replicates: u32,
+    /// Seed (viewer i draws from seed + i).
+    #[arg(long, default_value_t = 1000)]
+    seed: u64,
+    /// Also write every simulated trial to this results CSV (participants `sim<seed + i>`),
+    /// for `foveal psych fit`.
+    #[arg(long)]
+    trials_out: Option<PathBuf>,
+}
+
+impl PsychFitArgs {
+    /// The fit.
+    pub fn command(&self) -> psych::FitCommand {
+        psych::FitCommand {
+            results: self.results.clone(),
+            out: self.out.clone(),
+            options: foveal_psych::report::Options {
+                replicates: self.replicates as usize,
+                folds: self.folds as usize,
+                seed: self.seed,
+                f3_breaks: [self.f3_breaks.0, self.f3_breaks.1],
+                per_participant: !self.pooled_only,
+            },
+        }
+    }
+}
+
+impl PsychSimulateArgs {
+    /// The simulation.
+    pub fn command(&self) -> psych::SimulateCommand {
+        psych::SimulateCommand {
+            observer: psych::f2_observer(self.c, self.alpha, self.beta, self.guess, self.lapse),
+            observers: self.observers as usize,
+            repetitions: self.repetitions,
+            replicates: self.replicates as usize,
+            seed: self.seed,
+            trials_out: self.trials_out.clone(),
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

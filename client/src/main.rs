@@ -8,7 +8,7 @@ use std::io;
 use std::process::ExitCode;
 
 use clap::Parser;
-use foveal_client::cli::{Cli, Command};
+use foveal_client::cli::{Cli, Command, PsychCommand};
 use foveal_client::commands::{self, Outcome};
 use tracing_subscriber::EnvFilter;
 
@@ -59,5 +59,7 @@ async fn run(cli: Cli) -> anyhow::Result<Outcome> {
         }
         Command::Fixations(args) => commands::fixations(&args.command())?,
         Command::Load(args) => commands::load(&args.server(), args.command()).await?,
+        Command::Psych(PsychCommand::Fit(args)) => commands::psych::fit(&args.command())?,
+        Command::Psych(PsychCommand::Simulate(args)) => commands::psych::simulate(&args.command())?,
     })
 }

@@ -18,6 +18,12 @@ use crate::trial::Trial;
 pub const MAX_GUESS: f64 = 0.5;
 /// Upper bound of the lapse rate λ.
 pub const MAX_LAPSE: f64 = 0.1;
+/// Least fall-off constant C fitted (degrees).
+pub const MIN_C: f64 = 0.01;
+/// Greatest fall-off constant C fitted (degrees): beyond it F2 is flat over any display, and a
+/// constant that runs here is not identified by the data (say, F3's C1 with no eccentricity
+/// tested below its break).
+pub const MAX_C: f64 = 1000.0;
 
 /// A fit that cannot be made.
 #[derive(Debug, Error, PartialEq)]
@@ -274,7 +280,11 @@ impl CostFunction for Likelihood<'_> {
     fn cost(&self, v: &Self::Param) -> Result<f64, argmin::core::Error> {
         let k = self.function.constants().len();
         // Far outside any plausible value the likelihood is flat; a wall keeps the simplex home.
-        if v.iter().any(|x| !x.is_finite() || x.abs() > 30.0) {
+        if v.iter().any(|x| !x.is_finite() || x.abs() > 30.0)
+            || v[4..]
+                .iter()
+                .any(|c| !(MIN_C.ln()..=MAX_C.ln()).contains(c))
+        {
             return Ok(f64::MAX);
         }
         let observer = Params::from_vec(v, k).observer(self.function);

@@ -58,6 +58,9 @@ pub fn svg(cells: &[Cell], observer: &Observer, title: &str) -> Result<String, S
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
+            .light_line_style(WHITE)
+            .x_labels(6)
+            .x_label_formatter(&|x| format!("{}", (x * 1000.0).round() / 1000.0))
             .x_desc("gap (degrees, log scale)")
             .y_desc("P(reported apart)")
             .draw()
@@ -103,7 +106,7 @@ pub fn svg(cells: &[Cell], observer: &Observer, title: &str) -> Result<String, S
         let mut chart = ChartBuilder::on(&right)
             .margin(12)
             .caption(
-                "reported apart against eccentricity, by gap; lines: fitted F2",
+                "reported apart against eccentricity, by gap (triangles: touching); lines: fitted F2",
                 ("sans-serif", 14),
             )
             .x_label_area_size(40)
@@ -112,6 +115,7 @@ pub fn svg(cells: &[Cell], observer: &Observer, title: &str) -> Result<String, S
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
+            .light_line_style(WHITE)
             .x_desc("eccentricity (degrees)")
             .y_desc("P(reported apart)")
             .draw()

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use crate::bootstrap::{Bootstrap, bootstrap};
 use crate::compare::{Standing, compare};
-use crate::fit::{Cell, FitError, cells};
+use crate::fit::{Cell, FitError, MAX_C, cells};
 use crate::model::Function;
 use crate::trial::Trial;
 
@@ -164,7 +164,13 @@ pub fn markdown(fits: &[GroupFit], options: &Options) -> String {
                 .function
                 .constants()
                 .iter()
-                .map(|c| format!("{c:.3}"))
+                .map(|&c| {
+                    if c >= 0.999 * MAX_C {
+                        format!("{MAX_C} (unbounded: not identified)")
+                    } else {
+                        format!("{c:.3}")
+                    }
+                })
                 .collect();
             let _ = writeln!(
                 s,

@@ -9,6 +9,7 @@
 //! - [`health`]: `foveal health`.
 //! - [`fixations`]: `foveal fixations`.
 //! - [`load`]: `foveal load`.
+//! - [`psych`]: `foveal psych fit` and `foveal psych simulate`.
 //! - [`CommandError`]: why a command could not run.
 
 mod error;
@@ -16,6 +17,7 @@ pub mod fixations;
 pub mod health;
 pub mod input;
 pub mod load;
+pub mod psych;
 pub mod send;
 pub mod server;
 pub mod watch;
