@@ -387,6 +387,7 @@ fn run(
             poses,
             quantised_poses,
             collisions,
+            stepped: stepping,
         });
 
         if control.steps_left > 0 {

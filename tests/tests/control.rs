@@ -33,6 +33,8 @@ async fn pause_stops_the_frame_counter_and_step_advances_it_by_exactly_the_frame
     let mut client = server.client().await;
     let mut frames = watch(&mut client, 1, false).await;
     next_frame(&mut frames).await;
+    // Stepped frames reach a subscriber of every 1000th frame too: someone asked to see them.
+    let mut sparse = watch(&mut client, 1000, false).await;
 
     let paused = client
         .pause(pb::PauseRequest {})
@@ -88,6 +90,17 @@ async fn pause_stops_the_frame_counter_and_step_advances_it_by_exactly_the_frame
     }
     tokio::time::sleep(Duration::from_millis(200)).await;
     assert_eq!(status(&mut client).await.frames, five.frames);
+    let mut seen = Vec::new();
+    while let Ok(Ok(Some(f))) =
+        tokio::time::timeout(Duration::from_millis(100), sparse.message()).await
+    {
+        seen.push(f.index);
+    }
+    let stepped: Vec<u64> = (paused.frames..five.frames).collect();
+    assert!(
+        seen.ends_with(&stepped),
+        "every_k 1000 saw {seen:?}, stepped {stepped:?}"
+    );
 
     let e = client
         .step(pb::StepRequest { frames: 601 })
