@@ -255,7 +255,8 @@ export const PushGazeResponseSchema: GenMessage<PushGazeResponse> = /*@__PURE__*
  */
 export type WatchFramesRequest = Message<"foveal.v1.WatchFramesRequest"> & {
   /**
-   * Send every k-th frame (frames whose index is a multiple of k). 0 and 1 both mean every frame.
+   * Send every k-th frame (frames whose index is a multiple of k), and every frame simulated by
+   * Step. 0 and 1 both mean every frame.
    *
    * @generated from field: uint32 every_k = 1;
    */
