@@ -610,7 +610,7 @@ async function togglePause(): Promise<void> {
       setPaused(false);
     } else {
       const s = await client.pause({});
-      heard(s, `simulation paused at frame ${s.frames}: N or "step" advances one frame`);
+      heard(s, `simulation paused after frame ${s.frames - 1n}: N or "step" advances one frame`);
     }
   } catch (e) {
     if (!loop.paused) {
@@ -772,13 +772,16 @@ function showPick(): void {
   if (picked.body < 0) return;
   const ins = picked.inspection;
   const lines = [`body ${picked.body}${ins ? ` at frame ${ins.frameIndex}: ${ins.pairsTotal} candidate pair${ins.pairsTotal === 1 ? "" : "s"}` : ""}  (Esc: unpick)`];
+  if (ins && lastFrame && ins.frameIndex !== lastFrame.index) {
+    lines.push(`(the view shows frame ${lastFrame.index}${view.software ? ": this page draws every 6th frame; N steps to the latest" : ""})`);
+  }
   if (picked.error) lines.push(picked.error);
   else if (!ins) lines.push("asking the server…");
   else {
     for (const p of ins.pairs) {
       lines.push(
         `  with ${String(p.other).padEnd(6)} ${(STATUS_NAMES[p.status] ?? "?").padEnd(24)} levels ${p.level}/${p.otherLevel}` +
-          `${p.resolvedLevel ? ` resolved at ${p.resolvedLevel}` : ""}  priority ${p.priority.toPrecision(3)}${p.foveal ? "  foveal" : ""}`,
+          `${p.resolvedLevel ? ` resolved at ${p.resolvedLevel}` : ""}  priority ${p.priority > 0 ? p.priority.toPrecision(3) : "not ranked"}${p.foveal ? "  foveal" : ""}`,
       );
     }
     if (ins.pairs.length < ins.pairsTotal) lines.push(`  … and ${ins.pairsTotal - ins.pairs.length} more`);
@@ -883,7 +886,7 @@ async function pollStatus(): Promise<void> {
   try {
     const s = await client.getStatus({});
     statusBackoff.succeed();
-    if (s.paused !== loop.paused) loop.note = s.paused ? `simulation paused at frame ${s.frames}` : "";
+    if (s.paused !== loop.paused) loop.note = s.paused ? `simulation paused after frame ${s.frames - 1n}` : "";
     loop.paused = s.paused;
     loop.frames = Number(s.frames);
     showLoop();

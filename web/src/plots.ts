@@ -47,7 +47,7 @@ class Chart {
       {
         title,
         width,
-        height: 96,
+        height: 84,
         legend: { show: true, live: false },
         cursor: { show: false },
         scales: { x: { time: false } },
