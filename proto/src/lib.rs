@@ -98,7 +98,7 @@ mod tests {
     }
 
     #[test]
-    fn descriptor_set_has_the_six_methods_with_their_streaming_kinds() {
+    fn descriptor_set_has_the_eleven_methods_with_their_streaming_kinds() {
         let service = service();
         // (name, client streaming, server streaming)
         let expected = [
@@ -108,6 +108,11 @@ mod tests {
             ("GetScene", false, false),
             ("Configure", false, false),
             ("GetStatus", false, false),
+            ("Pause", false, false),
+            ("Resume", false, false),
+            ("Step", false, false),
+            ("Restart", false, false),
+            ("InspectBody", false, false),
         ];
         assert_eq!(service.method.len(), expected.len());
         for (name, client_streaming, server_streaming) in expected {

@@ -2,7 +2,8 @@
 //!
 //! Three roles, because the three kinds of client need different trust: a viewer only reads
 //! (WatchFrames, GetScene, GetStatus, reflection), a gaze bridge only writes gaze (StreamGaze,
-//! PushGaze), and only an operator may replace the scene (Configure). `admin` may call everything.
+//! PushGaze), and only an operator may replace or control the scene (Configure, Pause, Resume,
+//! Step, Restart). `admin` may call everything.
 //! The health service is always open, so that orchestrators can probe the server without a secret.
 //!
 //! Tokens come from `FOVEAL_VIEWER_TOKEN`, `FOVEAL_GAZE_TOKEN`, `FOVEAL_ADMIN_TOKEN` or a tokens
@@ -236,7 +237,7 @@ pub fn access_for(path: &str) -> Access {
     if let Some(method) = path.strip_prefix("/foveal.v1.Foveal/") {
         Access::Role(match method {
             "StreamGaze" | "PushGaze" => Role::Gaze,
-            "Configure" => Role::Admin,
+            "Configure" | "Pause" | "Resume" | "Step" | "Restart" => Role::Admin,
             _ => Role::Viewer,
         })
     } else if path.starts_with("/grpc.reflection.") {
@@ -345,6 +346,18 @@ mod tests {
             PermissionDenied
         );
         assert_eq!(code(call("/foveal.v1.Foveal/Configure", Some(A))), Ok);
+        // The loop's controls are the admin's, as Configure; inspecting a body is a viewer's.
+        for method in ["Pause", "Resume", "Step", "Restart"] {
+            let path = format!("/foveal.v1.Foveal/{method}");
+            assert_eq!(code(call(&path, Some(V))), PermissionDenied, "{method}");
+            assert_eq!(code(call(&path, Some(G))), PermissionDenied, "{method}");
+            assert_eq!(code(call(&path, Some(A))), Ok, "{method}");
+        }
+        assert_eq!(code(call("/foveal.v1.Foveal/InspectBody", Some(V))), Ok);
+        assert_eq!(
+            code(call("/foveal.v1.Foveal/InspectBody", Some(G))),
+            PermissionDenied
+        );
         assert_eq!(
             code(call("/foveal.v1.Foveal/GetScene", None)),
             Unauthenticated

@@ -26,6 +26,9 @@ pub struct FrameMsg {
     pub quantised_poses: Option<Arc<pb::QuantisedPoses>>,
     /// The frame's collision list, present while at least one subscriber wants it.
     pub collisions: Option<Arc<pb::Collisions>>,
+    /// Simulated by a Step: sent to every subscriber whatever its `every_k` (a frame someone
+    /// asked to see one at a time).
+    pub stepped: bool,
 }
 
 /// What a subscriber wants besides the frame's metrics.
@@ -170,7 +173,7 @@ impl Subscription {
                 Err(broadcast::error::RecvError::Closed) => return None,
             };
             let index = msg.frame.index;
-            if index % self.every_k != 0 {
+            if index % self.every_k != 0 && !msg.stepped {
                 continue;
             }
             // Only the first frame or so after subscribing can lack poses or collisions (published before the
@@ -244,6 +247,7 @@ mod tests {
             poses: poses.then(|| Arc::new(pb::Poses::default())),
             quantised_poses: None,
             collisions: None,
+            stepped: false,
         }
     }
 

@@ -45,6 +45,51 @@ pub enum Command {
     Swap(Box<Swap>),
     /// Finish the current frame and exit.
     Stop,
+    /// Stop simulating at the next frame boundary until Resume (or Step); answers the state.
+    Pause(oneshot::Sender<LoopState>),
+    /// Simulate at the frame rate again from now; answers the state.
+    Resume(oneshot::Sender<LoopState>),
+    /// Simulate this many frames of a paused loop back to back, then answer (Err: the loop runs).
+    Step(u32, oneshot::Sender<Result<LoopState, StepRefused>>),
+    /// Answer a body's candidate pairs in the latest frame (by body id).
+    Inspect(u32, oneshot::Sender<Inspection>),
+}
+
+/// The loop's state as a control call answers it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LoopState {
+    /// Whether the loop is paused.
+    pub paused: bool,
+    /// Frames simulated since the server started.
+    pub frames: u64,
+}
+
+/// Step asked of a loop that is not paused.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StepRefused;
+
+/// A body's candidate pairs in the latest frame, as InspectBody answers them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Inspection {
+    /// The frame's protocol index (0 before any frame of the scene: nothing to inspect).
+    pub frame_index: u64,
+    /// Bodies in the scene.
+    pub bodies: u32,
+    /// The body's pairs, by the other body's id.
+    pub pairs: Vec<foveal_proto::pb::PairInspection>,
+    /// How many pairs the body had in all.
+    pub pairs_total: u32,
+}
+
+/// The most pairs an inspection lists.
+pub const MAX_INSPECTED_PAIRS: usize = 256;
+
+/// The pause state and the steps owed, kept by the loop.
+#[derive(Debug, Default)]
+struct Control {
+    paused: bool,
+    steps_left: u32,
+    step_reply: Option<oneshot::Sender<Result<LoopState, StepRefused>>>,
 }
 
 /// The running loop thread.
@@ -96,16 +141,105 @@ fn panic_message(panic: &(dyn std::any::Any + Send)) -> String {
         .unwrap_or_else(|| "unknown panic".into())
 }
 
+fn state(control: &Control, shared: &Shared) -> LoopState {
+    LoopState {
+        paused: control.paused,
+        frames: shared.metrics.frames(),
+    }
+}
+
+/// The pairs of body `body` (an id) in `sim`'s latest frame.
+pub fn inspect(sim: &Simulation, body: u32, frame_index: u64) -> Inspection {
+    use foveal_engine::narrow_phase::PairStatus;
+    use foveal_proto::pb;
+    let priorities = sim.priorities();
+    let mut pairs: Vec<pb::PairInspection> = Vec::new();
+    let mut total = 0u32;
+    for (i, p) in sim.pairs().iter().enumerate() {
+        let (a, b) = sim.id_pair((p.a, p.b));
+        if a != body && b != body {
+            continue;
+        }
+        total += 1;
+        // Levels are by slot order of the engine's pair: the one of the slot holding `body`.
+        let mine = usize::from(sim.body_ids()[p.a as usize] != body);
+        let status = match p.status {
+            PairStatus::Untested => pb::PairStatus::Untested,
+            PairStatus::Active => pb::PairStatus::Active,
+            PairStatus::Colliding => pb::PairStatus::Colliding,
+            PairStatus::Separate => pb::PairStatus::Separate,
+            PairStatus::Deemed => pb::PairStatus::Deemed,
+        };
+        pairs.push(pb::PairInspection {
+            other: if a == body { b } else { a },
+            status: status as i32,
+            level: u32::from(p.levels[mine]),
+            other_level: u32::from(p.levels[1 - mine]),
+            resolved_level: u32::from(p.resolved_level),
+            priority: f64::from(priorities.weight(i)),
+            foveal: priorities.inner(i),
+        });
+    }
+    pairs.sort_by_key(|p| p.other);
+    pairs.truncate(MAX_INSPECTED_PAIRS);
+    Inspection {
+        frame_index,
+        bodies: sim.world().len() as u32,
+        pairs,
+        pairs_total: total,
+    }
+}
+
 /// Whether the loop should keep going after handling a command.
 fn handle(
     cmd: Command,
     sim: &mut Simulation,
     offset: &mut u64,
     period: &mut Duration,
+    control: &mut Control,
     shared: &Shared,
 ) -> bool {
     match cmd {
         Command::Stop => false,
+        Command::Pause(reply) => {
+            if !control.paused {
+                control.paused = true;
+                shared.set_paused(true);
+                tracing::info!(frames = shared.metrics.frames(), "frame loop paused");
+            }
+            // Err: the caller gave up waiting; the pause stands regardless.
+            let _ = reply.send(state(control, shared));
+            true
+        }
+        Command::Resume(reply) => {
+            if control.paused {
+                control.paused = false;
+                shared.set_paused(false);
+                tracing::info!(frames = shared.metrics.frames(), "frame loop resumed");
+            }
+            let _ = reply.send(state(control, shared));
+            true
+        }
+        Command::Step(frames, reply) => {
+            if !control.paused || control.step_reply.is_some() {
+                let _ = reply.send(Err(StepRefused));
+            } else if frames == 0 {
+                let _ = reply.send(Ok(state(control, shared)));
+            } else {
+                control.steps_left = frames;
+                control.step_reply = Some(reply);
+            }
+            true
+        }
+        Command::Inspect(body, reply) => {
+            let index = if shared.metrics.frames() > *offset {
+                *offset + sim.last_report().index
+            } else {
+                0
+            };
+            let _ = reply.send(inspect(sim, body, index));
+            true
+        }
         Command::Swap(swap) => {
             let Swap {
                 sim: new,
@@ -153,8 +287,28 @@ fn run(
     let mut offset = 0u64;
     let mut summary = Summary::new(summary_interval, Instant::now(), &shared.metrics);
     let mut deadline = Instant::now();
+    let mut control = Control::default();
     tracing::info!(period_ms = period.as_secs_f64() * 1e3, "frame loop started");
     'frames: loop {
+        // Paused with no step owed: wait for commands only; the next frame after a Resume starts
+        // at once and is paced from there.
+        while control.paused && control.steps_left == 0 {
+            let Ok(cmd) = commands.recv() else {
+                break 'frames;
+            };
+            if !handle(
+                cmd,
+                &mut sim,
+                &mut offset,
+                &mut period,
+                &mut control,
+                shared,
+            ) {
+                break 'frames;
+            }
+            deadline = Instant::now();
+        }
+        let stepping = control.steps_left > 0;
         // Wait for the deadline, serving commands meanwhile; with the deadline already past, only
         // drain what is pending. A simulation with a pool stops waiting POOL_WARM early and keeps
         // its pool busy until the deadline (see `Simulation::warm_pool_until`).
@@ -168,7 +322,7 @@ fn run(
                 .checked_sub(warm)
                 .unwrap_or(deadline)
                 .saturating_duration_since(Instant::now());
-            let cmd = if wait.is_zero() {
+            let cmd = if wait.is_zero() || stepping {
                 match commands.try_recv() {
                     Ok(cmd) => cmd,
                     Err(mpsc::TryRecvError::Empty) => break,
@@ -181,13 +335,24 @@ fn run(
                     Err(RecvTimeoutError::Disconnected) => break 'frames,
                 }
             };
-            if !handle(cmd, &mut sim, &mut offset, &mut period, shared) {
+            if !handle(
+                cmd,
+                &mut sim,
+                &mut offset,
+                &mut period,
+                &mut control,
+                shared,
+            ) {
                 break 'frames;
             }
         }
+        if control.paused && control.steps_left == 0 {
+            // Paused while waiting for this frame's deadline.
+            continue 'frames;
+        }
 
         let left = deadline.saturating_duration_since(Instant::now());
-        if !left.is_zero() {
+        if !left.is_zero() && !stepping {
             let until = clock.now_ns().saturating_add(left.as_nanos() as u64);
             sim.warm_pool_until(&clock, until);
         }
@@ -222,10 +387,22 @@ fn run(
             poses,
             quantised_poses,
             collisions,
+            stepped: stepping,
         });
 
+        if control.steps_left > 0 {
+            control.steps_left -= 1;
+            if control.steps_left == 0
+                && let Some(reply) = control.step_reply.take()
+            {
+                // Err: the caller gave up waiting; the frames were simulated regardless.
+                let _ = reply.send(Ok(state(&control, shared)));
+            }
+        }
         deadline += period;
-        if end > deadline {
+        if stepping {
+            deadline = end;
+        } else if end > deadline {
             shared.metrics.overrun();
             tracing::debug!(
                 late_ms = (end - deadline).as_secs_f64() * 1e3,

@@ -18,7 +18,8 @@
 //! - [`gaze`]: gaze-sample validation shared by StreamGaze and PushGaze.
 //! - [`fanout`]: the non-blocking frame broadcast and each WatchFrames subscriber's stream.
 //! - [`service`]: the `foveal.v1.Foveal` handlers; [`convert`]: engine ↔ protocol conversions and
-//!   Configure's merge rule.
+//!   Configure's merge rule; `control`: Pause, Resume, Step, Restart and InspectBody, answered by
+//!   the loop at a frame boundary.
 //! - [`state`], [`metrics`], [`summary`], [`shutdown`]: shared state, counters, the per-second
 //!   summary line, the shutdown signal.
 //! - [`web`]: the browser viewer on the gRPC port: grpc-web and the embedded page; `origin`: the
@@ -43,6 +44,7 @@ mod auth;
 pub mod cli;
 mod clock;
 pub mod config;
+mod control;
 mod convert;
 pub mod error;
 mod fanout;

@@ -16,6 +16,7 @@ use tokio_stream::wrappers::ReceiverStream;
 use tonic::{Request, Response, Status};
 
 use crate::auth::Caller;
+use crate::control;
 use crate::convert;
 use crate::fanout;
 use crate::fixation_cell::SourceKey;
@@ -342,7 +343,61 @@ impl pb::foveal_server::Foveal for FovealService {
             config: scene.description.config,
             gaze_samples_rate_limited: m.gaze_rate_limited(),
             gaze_sources_live: s.fixation.live_sources(Instant::now(), s.gaze_max_age) as u32,
+            paused: s.paused(),
         }))
+    }
+
+    async fn pause(
+        &self,
+        request: Request<pb::PauseRequest>,
+    ) -> Result<Response<pb::LoopState>, Status> {
+        control::log_call("Pause", &request);
+        control::pause(&self.commands).await.map(Response::new)
+    }
+
+    async fn resume(
+        &self,
+        request: Request<pb::ResumeRequest>,
+    ) -> Result<Response<pb::LoopState>, Status> {
+        control::log_call("Resume", &request);
+        control::resume(&self.commands).await.map(Response::new)
+    }
+
+    async fn step(
+        &self,
+        request: Request<pb::StepRequest>,
+    ) -> Result<Response<pb::LoopState>, Status> {
+        control::log_call("Step", &request);
+        let frames = request.into_inner().frames;
+        control::step(&self.commands, frames)
+            .await
+            .map(Response::new)
+    }
+
+    async fn restart(
+        &self,
+        request: Request<pb::RestartRequest>,
+    ) -> Result<Response<pb::ConfigureResponse>, Status> {
+        // A Configure of the seed alone (or of nothing: the same scene again), with the caller's
+        // metadata and extensions, so that it is checked, logged and applied as one.
+        let (metadata, extensions, req) = request.into_parts();
+        self.configure(Request::from_parts(
+            metadata,
+            extensions,
+            control::restart_request(req.seed),
+        ))
+        .await
+    }
+
+    async fn inspect_body(
+        &self,
+        request: Request<pb::InspectBodyRequest>,
+    ) -> Result<Response<pb::BodyInspection>, Status> {
+        let body = request.into_inner().body;
+        let bodies = self.shared.scene().sim.scene.bodies;
+        control::inspect(&self.commands, body, bodies)
+            .await
+            .map(Response::new)
     }
 }
 

@@ -1,6 +1,7 @@
 //! State shared between the service handlers and the frame loop.
 
-use std::sync::{Arc, PoisonError, RwLock};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex, PoisonError, RwLock};
 use std::time::{Duration, Instant};
 
 use foveal_engine::{SimConfig, Simulation};
@@ -51,6 +52,10 @@ pub struct Shared {
     /// The session recording (`--record`), if any.
     pub recorder: Option<Arc<Recorder>>,
     scene: RwLock<Arc<Scene>>,
+    /// Whether the loop is paused (Pause), and when it last resumed: a paused loop is not a
+    /// stalled one, and the watchdog counts a resumed loop's silence from its resumption.
+    paused: AtomicBool,
+    resumed_at: Mutex<Option<Instant>>,
 }
 
 impl Shared {
@@ -64,6 +69,8 @@ impl Shared {
             fanout: Arc::new(Fanout::new(frame_buffer)),
             recorder: None,
             scene: RwLock::new(Arc::new(scene)),
+            paused: AtomicBool::new(false),
+            resumed_at: Mutex::new(None),
         }
     }
 
@@ -84,6 +91,30 @@ impl Shared {
     /// The scene in force.
     pub fn scene(&self) -> Arc<Scene> {
         Arc::clone(&self.scene.read().unwrap_or_else(PoisonError::into_inner))
+    }
+
+    /// Whether the loop is paused.
+    pub fn paused(&self) -> bool {
+        self.paused.load(Ordering::Acquire)
+    }
+
+    /// When the loop last resumed from a pause, if it ever did.
+    pub fn resumed_at(&self) -> Option<Instant> {
+        *self
+            .resumed_at
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+    }
+
+    /// Record that the loop paused or resumed (called by the loop).
+    pub fn set_paused(&self, paused: bool) {
+        if !paused {
+            *self
+                .resumed_at
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner) = Some(Instant::now());
+        }
+        self.paused.store(paused, Ordering::Release);
     }
 
     /// Replace the scene (called by the loop at the frame boundary where it swaps simulations).

@@ -1,5 +1,7 @@
 //! Health follows the loop: NOT_SERVING when no frame has completed for a stated number of frame
 //! periods ([`crate::ServerConfig::stall_periods`]), SERVING again as soon as frames complete.
+//! A loop paused on purpose (Pause) is not stalled, and a resumed one is given its periods from
+//! the moment it resumed.
 //!
 //! Without it, health said SERVING and GetStatus its last good fps while frames took seconds each.
 
@@ -44,9 +46,12 @@ pub async fn run(
             () = shutdown.wait() => return,
             () = tokio::time::sleep(check) => {}
         }
-        let last = shared.metrics.last_frame_at().unwrap_or(started);
+        let mut last = shared.metrics.last_frame_at().unwrap_or(started);
+        if let Some(resumed) = shared.resumed_at() {
+            last = last.max(resumed);
+        }
         let now = Instant::now();
-        let is_stalled = stalled(last, now, period, periods);
+        let is_stalled = !shared.paused() && stalled(last, now, period, periods);
         if is_stalled && serving {
             serving = false;
             tracing::warn!(

@@ -2,7 +2,13 @@
 // pointer's rate, at most two requests in flight (a move never waits behind a repeat). While the pointer rests on the scene its
 // position is re-sent every 100 ms, because the server treats gaze older than `gaze_max_age`
 // (0.5 s by default) as stale and falls back to the screen centre: a resting eye still looks.
+// When the pointer leaves the scene (to the controls, the plots) the last position over the scene
+// is held and re-sent the same way, so the fixation stays where the viewer last looked instead of
+// dropping to the centre; it stops while the tab is hidden or "mouse is the gaze" is off. A failed
+// call (server away, a token that may not send gaze) backs off with jitter, 0.5 s doubling to 5 s,
+// so a page never floods a server that is down.
 import { create } from "@bufbuild/protobuf";
+import { Backoff } from "./backoff";
 import { GazeSampleSchema, type GazeSample } from "./gen/foveal/v1/foveal_pb";
 import type { FovealClient } from "./rpc";
 
@@ -15,8 +21,10 @@ const MAX_PENDING = 256;
 
 export class MouseGaze {
   enabled = true;
-  /** The pointer in normalised screen coordinates, or null when it is off the scene. */
+  /** The pointer in normalised screen coordinates, or null before it first reaches the scene. */
   pointer: { x: number; y: number } | null = null;
+  /** The pointer left the scene: `pointer` is its last position there, held. */
+  held = false;
   /** Samples accepted by the server, and the last refusal or transport error. */
   accepted = 0;
   lastError = "";
@@ -26,10 +34,11 @@ export class MouseGaze {
   private pending: GazeSample[] = [];
   private inFlight = 0;
   private lastSent = 0;
+  private backoff = new Backoff();
 
   constructor(private client: FovealClient, private target: HTMLElement) {
     target.addEventListener("pointermove", (e) => this.move(e));
-    target.addEventListener("pointerleave", () => (this.pointer = null));
+    target.addEventListener("pointerleave", () => (this.held = true));
     setInterval(() => this.tick(), FLUSH_MS);
   }
 
@@ -37,12 +46,13 @@ export class MouseGaze {
     const r = this.target.getBoundingClientRect();
     if (r.width <= 0 || r.height <= 0) return;
     this.pointer = { x: (e.clientX - r.left) / r.width, y: (e.clientY - r.top) / r.height };
+    this.held = false;
     this.lastPointerAt = performance.now();
     this.sample();
   }
 
   private sample(): void {
-    if (!this.enabled || !this.pointer) return;
+    if (!this.enabled || !this.pointer || document.hidden) return;
     this.pending.push(
       create(GazeSampleSchema, {
         trackerTimeS: performance.now() / 1000,
@@ -66,7 +76,7 @@ export class MouseGaze {
   private async flush(): Promise<void> {
     // Two lanes: the server keeps the sample it received last, and a repeat of the resting pointer
     // that is still in flight must not hold back the move that follows it.
-    if (this.inFlight >= 2 || this.pending.length === 0) return;
+    if (this.inFlight >= 2 || this.pending.length === 0 || !this.backoff.ready()) return;
     const samples = this.pending;
     this.pending = [];
     this.inFlight++;
@@ -77,8 +87,10 @@ export class MouseGaze {
       this.lastRoundTripMs = performance.now() - t0;
       this.accepted += Number(r.accepted);
       this.lastError = r.rejections[0] ? `${r.rejections[0].field}: ${r.rejections[0].reason}` : "";
+      this.backoff.succeed();
     } catch (e) {
       this.lastError = e instanceof Error ? e.message : String(e);
+      this.backoff.fail();
     } finally {
       this.inFlight--;
     }

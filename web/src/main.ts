@@ -1,16 +1,21 @@
 // foveal viewer: the scene from GetScene, frames from WatchFrames (quantised poses and the
 // collision list), the mouse as gaze through PushGaze, controls through Configure, and live plots.
-// It reconnects by itself when the server goes away and comes back.
+// The loop's own controls (Pause, Resume, Step, Restart), picking a body (InspectBody), debug
+// drawing, a colour-blind palette, a help overlay and a CSV of the last frames' metrics are a
+// researcher's tools. It reconnects by itself, with jittered back-off, when the server goes away.
 import { fromBinary, toBinary, type MessageInitShape } from "@bufbuild/protobuf";
 import { Code, ConnectError } from "@connectrpc/connect";
 import {
   FixationSource,
   FrameSchema,
+  PairStatus,
   SceneConfigSchema,
+  type BodyInspection,
   type Frame,
   type SceneConfig,
   type SceneDescription,
 } from "./gen/foveal/v1/foveal_pb";
+import { Backoff } from "./backoff";
 import {
   SCHEDULERS,
   TRUTHS,
@@ -25,10 +30,11 @@ import {
 import { MouseGaze } from "./gaze";
 import { Overlay, fovealRadius } from "./overlay";
 import { Plots } from "./plots";
+import { FrameLog } from "./csv";
 import { FirstContacts, starGap } from "./focus";
 import { applyPoses, applyQuantisedPoses, forEachPair } from "./poses";
-import { connect, pageToken } from "./rpc";
-import { COLOURS, SceneView } from "./scene";
+import { calls, connect, pageTokens } from "./rpc";
+import { COLOURS, PALETTES, SceneView, usePalette, type PaletteName } from "./scene";
 import { starDims } from "./star";
 
 function el<T extends HTMLElement>(id: string): T {
@@ -54,19 +60,41 @@ const stats = {
   drawMs: 0,
 };
 
-const token = pageToken();
-const client = connect(window.location.origin, token);
+const tokens = pageTokens();
+const client = connect(window.location.origin, tokens.token);
+// A second token for the mouse alone (`#gaze=...`), for a viewer token that may not send gaze.
+const gazeClient = tokens.gazeToken ? connect(window.location.origin, tokens.gazeToken) : client;
 const view = new SceneView(el<HTMLCanvasElement>("scene"));
 const overlay = new Overlay(el<HTMLCanvasElement>("overlay"));
 const plots = new Plots(el("plots"), 360);
-const gaze = new MouseGaze(client, el("scene"));
+const gaze = new MouseGaze(gazeClient, el("scene"));
+const log = new FrameLog();
 
 let scene: SceneDescription | null = null;
 let region: { rx: number; ry: number } | null = null;
 let lastFrame: Frame | null = null;
+/** The view holds its frame (a close-up, or a pause the server did not allow). */
 let paused = false;
 let restart: AbortController | null = null;
 const arrivals: number[] = [];
+
+/** The server's loop as the page last heard: paused, and its frame counter. */
+const loop = { paused: false, frames: -1, note: "" };
+
+/** Debug drawing and the palette, kept across visits. */
+const draw = {
+  links: false,
+  priority: false,
+  palette: (localStorage.getItem("foveal.palette") as PaletteName | null) ?? "standard",
+};
+if (!(draw.palette in PALETTES)) draw.palette = "standard";
+
+/** The body picked for inspection and what the server said about it. */
+const picked = {
+  body: -1,
+  inspection: null as BodyInspection | null,
+  error: "",
+};
 
 /** A first contact the view stopped at (see "Focus on a first contact" below). */
 interface FocusedContact {
@@ -91,7 +119,20 @@ const focus = {
   found: null as FocusedContact | null,
 };
 
-(window as unknown as { foveal: unknown }).foveal = { stats, view, gaze, focus };
+(window as unknown as { foveal: unknown }).foveal = {
+  stats,
+  view,
+  gaze,
+  focus,
+  plots,
+  loop,
+  picked,
+  draw,
+  calls,
+  pick: (body: number) => pickBody(body),
+  lastFrame: () => lastFrame,
+  csv: (n?: number) => log.csv(n),
+};
 
 // ------------------------------------------------------------------------------------ layout
 
@@ -124,6 +165,9 @@ function describe(e: unknown): string {
       return `${e.rawMessage} (this server wants a token: open ${window.location.origin}/#token=YOUR_TOKEN)`;
     }
     if (e.code === Code.PermissionDenied) {
+      if (e.rawMessage.includes("has the `gaze` role")) {
+        return `${e.rawMessage}. This page was opened with a gaze token: it steers the fixation with the mouse but may not watch. Give it a viewer (or admin) token too: ${window.location.origin}/#token=VIEWER_TOKEN&gaze=GAZE_TOKEN`;
+      }
       return `${e.rawMessage} (a gaze token sends the mouse, an admin token changes the scene)`;
     }
     return e.code === Code.Unknown ? e.rawMessage : `${Code[e.code]}: ${e.rawMessage}`;
@@ -173,6 +217,7 @@ function onFrame(f: Frame): void {
     }
     else if (budget?.case === "exact") use = 0;
     const candidates = Number(m.candidatePairs);
+    const p = f.profile;
     plots.push({
       t: f.simTimeS,
       collisionMs: 1000 * m.collisionTimeS,
@@ -180,10 +225,32 @@ function onFrame(f: Frame): void {
       perceived: m.perceivedInaccuracy,
       truePerceived: m.audit ? m.audit.truePerceivedInaccuracy : null,
       budgetUse: use,
-      deemedShare: candidates ? Number(m.deemedAtInterruption) / candidates : 0,
+      deemedShare: candidates ? Number(m.deemedAtInterruption) / candidates : null,
       fps: arrivals.length,
+      phasesMs: p
+        ? [p.integrateS + p.renumberS, p.broadS, p.prioritiseS, p.narrowS, p.responseS, p.measureS].map((v) => 1000 * v)
+        : [null, null, null, null, null, null],
     });
   }
+  log.push(f);
+}
+
+/** What the P and budget plots cannot show under the configuration in force, said on the plot. */
+function plotNotes(cfg: SceneConfig | undefined): { perceived: string; budget: string } {
+  const budget = cfg?.budget?.kind.case;
+  return {
+    perceived: cfg?.audit
+      ? ""
+      : "The true P needs the exact answer: tick \"audit\" to draw it. The solid line is the server's estimate.",
+    budget:
+      budget === "fractionOfExact"
+        ? "Budget used is not drawn under a fraction-of-exact budget (the exact cost is not sent); the share deemed is."
+        : budget === "interruptAtZero"
+          ? "A zero budget does no sphere test: every candidate pair is deemed."
+          : budget === "exact"
+            ? "No budget: every pair is resolved, none deemed."
+            : "",
+  };
 }
 
 /** Draw a frame's poses and collision colours; returns the bodies written. */
@@ -195,11 +262,47 @@ function show(f: Frame): number {
   view.posesWritten(bodies);
   const c = f.collisions;
   view.colour((set) => {
-    if (!c) return;
-    forEachPair(c.real, (a, b) => (set(a, COLOURS.real), set(b, COLOURS.real)));
-    forEachPair(c.deemed, (a, b) => (set(a, COLOURS.deemed), set(b, COLOURS.deemed)));
-  });
+    if (c) {
+      forEachPair(c.real, (a, b) => (set(a, COLOURS.real), set(b, COLOURS.real)));
+      forEachPair(c.deemed, (a, b) => (set(a, COLOURS.deemed), set(b, COLOURS.deemed)));
+    }
+    const ins = picked.inspection;
+    if (picked.body >= 0 && ins) {
+      for (const p of ins.pairs) set(p.other, pairColour(p.status));
+    }
+    if (picked.body >= 0) set(picked.body, COLOURS.picked);
+  }, false, draw.priority ? priorityShade(f, bodies) : null);
+  const links: { a: number; b: number; c: typeof COLOURS.real }[] = [];
+  if (draw.links && c) {
+    forEachPair(c.real, (a, b) => links.push({ a, b, c: COLOURS.real }));
+    forEachPair(c.deemed, (a, b) => links.push({ a, b, c: COLOURS.deemed }));
+  }
+  if (picked.body >= 0 && picked.inspection) {
+    for (const p of picked.inspection.pairs) links.push({ a: picked.body, b: p.other, c: pairColour(p.status) });
+  }
+  view.setLinks(links, links.length > 0);
   return bodies;
+}
+
+function pairColour(status: PairStatus): typeof COLOURS.real {
+  return status === PairStatus.COLLIDING ? COLOURS.real : status === PairStatus.DEEMED ? COLOURS.deemed : COLOURS.separate;
+}
+
+let eccentricity = new Float32Array(0);
+/**
+ * Priority shading: each body's plain colour scaled by how near the fixation it is on the server's
+ * screen, in units of the foveal region (full inside it, falling off outside): what the
+ * schedulers' priority falls off with.
+ */
+function priorityShade(f: Frame, bodies: number): ((body: number) => number) | null {
+  const fix = f.fixation;
+  if (!fix || !region) return null;
+  if (eccentricity.length < bodies) eccentricity = new Float32Array(bodies);
+  view.eccentricities(fix.x, fix.y, region.rx, region.ry, eccentricity);
+  return (i) => {
+    const d = i < bodies ? eccentricity[i] : Infinity;
+    return d <= 1 ? 1.6 : Math.max(0.2, Math.exp(-(d - 1) / 2));
+  };
 }
 
 // ------------------------------------------------------------------------ focus on a first contact
@@ -309,8 +412,11 @@ function median(a: number[]): number {
 
 // ------------------------------------------------------------------------------------ session
 
+const reconnect = new Backoff();
+
 async function session(): Promise<void> {
   const d = await client.getScene({});
+  reconnect.succeed();
   scene = d;
   view.load(d);
   const cfg = d.config;
@@ -320,6 +426,7 @@ async function session(): Promise<void> {
   truth.textContent = `truth: ${truthName(cfg?.truth)}`;
   truth.title = truthMeaning(cfg?.truth);
   plots.clear();
+  plots.setNotes(plotNotes(cfg));
   layout();
   stats.connected = true;
   stats.lastError = "";
@@ -343,16 +450,15 @@ async function session(): Promise<void> {
 }
 
 async function run(): Promise<void> {
-  let backoff = 500;
   for (;;) {
     try {
       await session();
-      backoff = 500;
     } catch (e) {
       stats.connected = false;
       stats.lastError = describe(e);
       el("truth").textContent = "";
-      const wait = backoff;
+      // Doubling from 0.5 s to 5 s with jitter: a page never floods a server that is down.
+      const wait = reconnect.fail();
       const refused = e instanceof ConnectError && (e.code === Code.Unauthenticated || e.code === Code.PermissionDenied);
       const retry = `Retrying in ${(wait / 1000).toFixed(1)} s…`;
       setStatus(
@@ -362,7 +468,6 @@ async function run(): Promise<void> {
         "error",
       );
       await new Promise((r) => setTimeout(r, wait));
-      backoff = Math.min(5000, backoff * 2);
     }
   }
 }
@@ -374,12 +479,15 @@ for (const [name] of SCHEDULERS) schedulerSelect.add(new Option(name, name));
 const truthSelect = el<HTMLSelectElement>("truth-select");
 for (const [name] of TRUTHS) truthSelect.add(new Option(name, name));
 
-/** Show the configuration in force, except in the control the user is editing. */
-function fillControls(cfg: SceneConfig | undefined): void {
+/**
+ * Show the configuration in force, except in the control the user is editing (or in every control
+ * with `force`: a refused value goes back to the one in force).
+ */
+function fillControls(cfg: SceneConfig | undefined, force = false): void {
   if (!cfg) return;
   const set = (id: string, v: string) => {
     const e = el<HTMLInputElement | HTMLSelectElement>(id);
-    if (document.activeElement !== e) e.value = v;
+    if (force || document.activeElement !== e) e.value = v;
   };
   set("scheduler", schedulerName(cfg.scheduler));
   set("truth-select", truthName(cfg.truth));
@@ -388,80 +496,311 @@ function fillControls(cfg: SceneConfig | undefined): void {
   set("measure-model", formatModel(cfg.measureModel));
   set("schedule-model", formatModel(cfg.scheduleModel));
   el<HTMLInputElement>("audit").checked = cfg.audit;
+  if (force || document.activeElement !== el("seed")) el<HTMLInputElement>("seed").placeholder = String(cfg.seed);
 }
 
 type ConfigChange = Exclude<MessageInitShape<typeof SceneConfigSchema>, SceneConfig>;
 
-async function configure(change: (c: ConfigChange) => void): Promise<void> {
+/**
+ * Configure exactly the field named (`field`, a SceneConfig path) with the value `change` sets:
+ * with an update mask, so that 0 is sent as 0 and refused or applied by the server, never
+ * silently kept. A value the page or the server refuses goes back to the one in force, and the
+ * reason is shown.
+ */
+async function configure(field: string, change: (c: ConfigChange) => void): Promise<void> {
   const out = el("config-error");
-  const config: ConfigChange = { audit: el<HTMLInputElement>("audit").checked };
+  const config: ConfigChange = {};
+  const refused = (why: string) => {
+    el("config-ok").textContent = "";
+    out.textContent = `${why} (the control shows the value in force again)`;
+    fillControls(scene?.config, true);
+  };
   try {
     change(config);
   } catch (e) {
-    out.textContent = describe(e);
+    refused(describe(e));
     return;
   }
   out.textContent = "applying…";
   try {
-    const r = await client.configure({ config });
+    const r = await client.configure({ config, updateMask: { paths: [field] } });
     out.textContent = "";
     el("config-ok").textContent = `applied from frame ${r.firstFrameIndex}`;
     restart?.abort(); // the session restarts on the new scene (GetScene, new mesh)
   } catch (e) {
-    el("config-ok").textContent = "";
-    out.textContent = describe(e);
+    refused(describe(e));
   }
 }
 
 schedulerSelect.addEventListener("change", () =>
-  configure((c) => {
+  configure("scheduler", (c) => {
     const s = SCHEDULERS.find(([n]) => n === schedulerSelect.value);
     if (!s) throw new Error(`unknown scheduler ${schedulerSelect.value}`);
     c.scheduler = s[1];
   }),
 );
 truthSelect.addEventListener("change", () =>
-  configure((c) => {
+  configure("truth", (c) => {
     const t = TRUTHS.find(([n]) => n === truthSelect.value);
     if (!t) throw new Error(`unknown truth ${truthSelect.value}`);
     c.truth = t[1];
   }),
 );
 el("budget").addEventListener("change", (e) =>
-  configure((c) => (c.budget = parseBudget((e.target as HTMLInputElement).value))),
+  configure("budget", (c) => (c.budget = parseBudget((e.target as HTMLInputElement).value))),
 );
 el("bodies").addEventListener("change", (e) =>
-  configure((c) => {
-    const v = Number((e.target as HTMLInputElement).value);
-    if (!Number.isInteger(v) || v < 0) throw new Error(`bodies: "${(e.target as HTMLInputElement).value}" is not a whole number`);
+  configure("bodies", (c) => {
+    const text = (e.target as HTMLInputElement).value;
+    const v = Number(text);
+    // 0 and negatives go to the server, which says what it accepts.
+    if (text.trim() === "" || !Number.isInteger(v)) throw new Error(`bodies N: "${text}" is not a whole number`);
+    if (v < 0) throw new Error(`bodies N: ${v} is negative; the scene needs at least 1 body`);
     c.bodies = v;
   }),
 );
 el("measure-model").addEventListener("change", (e) =>
-  configure((c) => (c.measureModel = parseModel((e.target as HTMLInputElement).value))),
+  configure("measure_model", (c) => (c.measureModel = parseModel((e.target as HTMLInputElement).value))),
 );
 el("schedule-model").addEventListener("change", (e) =>
-  configure((c) => (c.scheduleModel = parseModel((e.target as HTMLInputElement).value))),
+  configure("schedule_model", (c) => (c.scheduleModel = parseModel((e.target as HTMLInputElement).value))),
 );
-el("audit").addEventListener("change", () => configure(() => {}));
+el("audit").addEventListener("change", () => configure("audit", (c) => (c.audit = el<HTMLInputElement>("audit").checked)));
 el<HTMLInputElement>("mouse-gaze").addEventListener("change", (e) => (gaze.enabled = (e.target as HTMLInputElement).checked));
 
+/** Hold the view's frame (a close-up; or a pause the server did not allow), or let it go. */
 function setPaused(on: boolean): void {
   paused = on;
-  el("pause").textContent = paused ? "resume" : "pause";
+  showLoop();
 }
-const togglePause = () => setPaused(!paused);
-el("pause").addEventListener("click", togglePause);
+
+function showLoop(): void {
+  el("pause").textContent = loop.paused || paused ? "resume" : "pause";
+  el("loop-note").textContent = loop.note;
+}
+
+/** Note the loop's state from a Pause, Resume or Step answer. */
+function heard(s: { paused: boolean; frames: bigint }, note: string): void {
+  loop.paused = s.paused;
+  loop.frames = Number(s.frames);
+  loop.note = note;
+  showLoop();
+}
+
+function refusedControl(what: string, e: unknown): string {
+  if (e instanceof ConnectError && (e.code === Code.PermissionDenied || e.code === Code.Unauthenticated)) {
+    return `${what} needs an admin token (${e.rawMessage})`;
+  }
+  return `${what}: ${describe(e)}`;
+}
+
+/**
+ * Pause or resume the server's simulation (admin). Without the right to, the view alone holds its
+ * frame and says why.
+ */
+async function togglePause(): Promise<void> {
+  if (paused && !loop.paused) {
+    // The view alone was held (a close-up, or a refused pause): let it go.
+    setPaused(false);
+    return;
+  }
+  try {
+    if (loop.paused) {
+      heard(await client.resume({}), "");
+      setPaused(false);
+    } else {
+      const s = await client.pause({});
+      heard(s, `simulation paused after frame ${s.frames - 1n}: N or "step" advances one frame`);
+    }
+  } catch (e) {
+    if (!loop.paused) {
+      setPaused(true);
+      loop.note = `${refusedControl("pausing the simulation", e)}: only the view is paused`;
+    } else loop.note = refusedControl("resuming", e);
+    showLoop();
+  }
+}
+
+/** Advance a paused simulation by one frame (pausing it first if it runs). */
+async function stepOnce(): Promise<void> {
+  try {
+    if (!loop.paused) heard(await client.pause({}), "");
+    setPaused(false);
+    const s = await client.step({ frames: 1 });
+    heard(s, `simulation paused; stepped to frame ${s.frames - 1n}`);
+    if (picked.body >= 0) void inspect();
+  } catch (e) {
+    loop.note = refusedControl("stepping", e);
+    showLoop();
+  }
+}
+
+/** Start the scene again, with the seed typed (or the one in force). */
+async function restartScene(): Promise<void> {
+  const text = el<HTMLInputElement>("seed").value.trim();
+  let seed: bigint | undefined;
+  if (text !== "") {
+    try {
+      seed = BigInt(text);
+      if (seed < 0n || seed >= 1n << 64n) throw new Error("out of range");
+    } catch {
+      loop.note = `seed "${text}": use a whole number from 0 to 2^64 - 1 (empty: the seed in force)`;
+      el<HTMLInputElement>("seed").value = "";
+      showLoop();
+      return;
+    }
+  }
+  try {
+    const r = await client.restart({ seed });
+    loop.note = `restarted with seed ${r.applied?.seed} from frame ${r.firstFrameIndex}${loop.paused ? " (still paused)" : ""}`;
+    el<HTMLInputElement>("seed").value = "";
+    restart?.abort();
+  } catch (e) {
+    loop.note = refusedControl("restarting", e);
+  }
+  showLoop();
+}
+
+el("pause").addEventListener("click", () => void togglePause());
+el("step").addEventListener("click", () => void stepOnce());
+el("restart").addEventListener("click", () => void restartScene());
 el("reset").addEventListener("click", () => view.resetView());
 el("focus").addEventListener("click", () => setFocusArmed(!focus.armed));
+el("help-button").addEventListener("click", () => toggleHelp());
+el("help-close").addEventListener("click", () => toggleHelp(false));
 window.addEventListener("keydown", (e) => {
   if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
   if (e.key === "p" || e.key === " ") {
-    togglePause();
+    void togglePause();
     e.preventDefault();
-  } else if (e.key === "r") view.resetView();
+  } else if (e.key === "n" || e.key === ".") void stepOnce();
+  else if (e.key === "r") view.resetView();
   else if (e.key === "f") setFocusArmed(!focus.armed);
+  else if (e.key === "l") setDraw("links", !draw.links);
+  else if (e.key === "e") setDraw("priority", !draw.priority);
+  else if (e.key === "c") setPalette(draw.palette === "standard" ? "colour-blind" : "standard");
+  else if (e.key === "?" || e.key === "h") toggleHelp();
+  else if (e.key === "Escape") {
+    if (!el("help").hidden) toggleHelp(false);
+    else pickBody(-1);
+  }
 });
+
+// ------------------------------------------------------------------------------- help, drawing
+
+function toggleHelp(on = el("help").hidden): void {
+  el("help").hidden = !on;
+}
+
+/** Redraw the frame in view with the current colours (paused, nothing else would). */
+function reshow(): void {
+  if (lastFrame && !(view.focused && paused)) {
+    show(lastFrame);
+    view.commit();
+  }
+}
+
+function setDraw(what: "links" | "priority", on: boolean): void {
+  draw[what] = on;
+  el<HTMLInputElement>(what === "links" ? "draw-links" : "draw-priority").checked = on;
+  reshow();
+}
+
+function setPalette(name: PaletteName): void {
+  draw.palette = name;
+  usePalette(name);
+  document.body.classList.toggle("colour-blind", name === "colour-blind");
+  el<HTMLSelectElement>("palette").value = name;
+  localStorage.setItem("foveal.palette", name);
+  reshow();
+}
+el<HTMLInputElement>("draw-links").addEventListener("change", (e) => setDraw("links", (e.target as HTMLInputElement).checked));
+el<HTMLInputElement>("draw-priority").addEventListener("change", (e) => setDraw("priority", (e.target as HTMLInputElement).checked));
+el<HTMLSelectElement>("palette").addEventListener("change", (e) => setPalette((e.target as HTMLSelectElement).value as PaletteName));
+setPalette(draw.palette);
+
+el("csv").addEventListener("click", () => {
+  const n = Number(el<HTMLInputElement>("csv-frames").value) || undefined;
+  const text = log.csv(n);
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(new Blob([text], { type: "text/csv" }));
+  a.download = `foveal-frames-${log.range(n)}.csv`;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+});
+
+// ------------------------------------------------------------------------------------ picking
+
+/** Pick a body (-1: none) and ask the server for its pairs. */
+function pickBody(body: number): void {
+  picked.body = body;
+  picked.inspection = null;
+  picked.error = "";
+  showPick();
+  reshow();
+  if (body >= 0) void inspect();
+}
+
+let inspecting = false;
+async function inspect(): Promise<void> {
+  if (picked.body < 0 || inspecting) return;
+  const body = picked.body;
+  inspecting = true;
+  try {
+    const r = await client.inspectBody({ body });
+    if (picked.body === body) (picked.inspection = r), (picked.error = "");
+  } catch (e) {
+    if (picked.body === body) picked.error = describe(e);
+  } finally {
+    inspecting = false;
+  }
+  showPick();
+  reshow();
+}
+
+const STATUS_NAMES: Record<number, string> = {
+  [PairStatus.UNTESTED]: "untested",
+  [PairStatus.ACTIVE]: "active",
+  [PairStatus.COLLIDING]: "real collision",
+  [PairStatus.SEPARATE]: "separate",
+  [PairStatus.DEEMED]: "deemed (budget ran out)",
+};
+
+function showPick(): void {
+  const box = el("pick");
+  box.hidden = picked.body < 0;
+  if (picked.body < 0) return;
+  const ins = picked.inspection;
+  const lines = [`body ${picked.body}${ins ? ` at frame ${ins.frameIndex}: ${ins.pairsTotal} candidate pair${ins.pairsTotal === 1 ? "" : "s"}` : ""}  (Esc: unpick)`];
+  if (ins && lastFrame && ins.frameIndex !== lastFrame.index) {
+    lines.push(`(the view shows frame ${lastFrame.index}${view.software ? ": this page draws every 6th frame; N steps to the latest" : ""})`);
+  }
+  if (picked.error) lines.push(picked.error);
+  else if (!ins) lines.push("asking the server…");
+  else {
+    for (const p of ins.pairs) {
+      lines.push(
+        `  with ${String(p.other).padEnd(6)} ${(STATUS_NAMES[p.status] ?? "?").padEnd(24)} levels ${p.level}/${p.otherLevel}` +
+          `${p.resolvedLevel ? ` resolved at ${p.resolvedLevel}` : ""}  priority ${p.priority > 0 ? p.priority.toPrecision(3) : "not ranked"}${p.foveal ? "  foveal" : ""}`,
+      );
+    }
+    if (ins.pairs.length < ins.pairsTotal) lines.push(`  … and ${ins.pairsTotal - ins.pairs.length} more`);
+  }
+  el("pick-text").textContent = lines.join("\n");
+}
+
+// A click on the scene (a press and release without a drag, which orbits) picks the body under it.
+{
+  const canvas = el<HTMLCanvasElement>("scene");
+  let down: { x: number; y: number } | null = null;
+  canvas.addEventListener("pointerdown", (e) => (down = e.button === 0 ? { x: e.clientX, y: e.clientY } : null));
+  canvas.addEventListener("pointerup", (e) => {
+    if (!down || Math.hypot(e.clientX - down.x, e.clientY - down.y) > 4) return;
+    down = null;
+    const r = canvas.getBoundingClientRect();
+    pickBody(view.pickAt((e.clientX - r.left) / r.width, (e.clientY - r.top) / r.height));
+  });
+}
 
 // ------------------------------------------------------------------------------------ drawing
 
@@ -488,7 +827,7 @@ function drawReadout(): void {
             ? ["the budget was spent before the narrow phase: every pair deemed (raise the budget)"]
             : []),
           `Δ ${m.geometricInaccuracy.toFixed(3)}${sampled(m.metricsStride, m.geometricInaccuracySe)}  P ${m.perceivedInaccuracy.toFixed(3)}${sampled(m.metricsStride, m.perceivedInaccuracySe)}${m.audit ? `  true P ${m.audit.truePerceivedInaccuracy.toFixed(3)}  false positives ${m.audit.trueFalsePositives}` : ""}`,
-          `fixation (${fix?.x.toFixed(3)}, ${fix?.y.toFixed(3)}) ${src}`,
+          `fixation (${fix?.x.toFixed(3)}, ${fix?.y.toFixed(3)}) ${src}${gaze.held && gaze.enabled ? " (mouse off the scene: its last position held)" : ""}`,
           `decode+update ${median(stats.updateMs).toFixed(2)} ms  parse ${median(stats.parseMs).toFixed(2)} ms  ${(stats.frameBytes / 1024).toFixed(0)} KiB/frame`,
           `gaze sent ${gaze.accepted}${gaze.lastError ? `  (${gaze.lastError})` : ""}`,
         ].join("\n")
@@ -539,13 +878,26 @@ function animate(t: number): void {
   }
 }
 
+// While the session is down the status is not polled (the session's own retries, backed off, find
+// the server again); a failing poll backs off too.
+const statusBackoff = new Backoff(1000, 5000);
 async function pollStatus(): Promise<void> {
+  if (!stats.connected || !statusBackoff.ready()) return;
   try {
     const s = await client.getStatus({});
-    text("server", `server: ${s.fps.toFixed(1)} fps  ${schedulerName(s.config?.scheduler)}  ${formatBudget(s.config?.budget)}  gaze ${s.gazeRateHz.toFixed(0)} Hz  ${s.subscribers} watching`);
+    statusBackoff.succeed();
+    if (s.paused !== loop.paused) loop.note = s.paused ? `simulation paused after frame ${s.frames - 1n}` : "";
+    loop.paused = s.paused;
+    loop.frames = Number(s.frames);
+    showLoop();
+    text("server", `server: ${s.paused ? "paused" : `${s.fps.toFixed(1)} fps`}  ${schedulerName(s.config?.scheduler)}  ${formatBudget(s.config?.budget)}  gaze ${s.gazeRateHz.toFixed(0)} Hz  ${s.subscribers} watching`);
+    plots.setNotes(plotNotes(s.config));
   } catch {
+    statusBackoff.fail();
     text("server", "server: unreachable");
   }
+  // A picked body's pairs follow the running simulation, once a second.
+  if (picked.body >= 0 && !loop.paused) void inspect();
 }
 
 layout();

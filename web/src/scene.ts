@@ -5,14 +5,35 @@ import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import type { SceneDescription } from "./gen/foveal/v1/foveal_pb";
 import { peripheralStarGeometry, starDims, starGeometry } from "./star";
 
-/** Colours of the legend, shared with the page's CSS swatches. */
+/** Colours of the legend, shared with the page's CSS swatches (see usePalette). */
 export const COLOURS = {
   body: new THREE.Color(0x7f8ea3),
   real: new THREE.Color(0x2fbf71),
   deemed: new THREE.Color(0xff4d4d),
   /** Every body but the pair in a close-up (see focusOn). */
   dimmed: new THREE.Color(0x2a3038),
+  /** The body picked for inspection, and its pairs that are neither real nor deemed. */
+  picked: new THREE.Color(0xffffff),
+  separate: new THREE.Color(0x5c7cfa),
 } as const;
+
+/**
+ * The two palettes of real and deemed: green and red, or for colour-blind viewers the
+ * Okabe-Ito blue and orange (told apart under every common colour-vision deficiency).
+ */
+export const PALETTES = {
+  standard: { real: 0x2fbf71, deemed: 0xff4d4d, separate: 0x5c7cfa },
+  "colour-blind": { real: 0x0072b2, deemed: 0xe69f00, separate: 0xcc79a7 },
+} as const;
+export type PaletteName = keyof typeof PALETTES;
+
+/** Switch the real and deemed colours (the caller recolours and updates the CSS swatches). */
+export function usePalette(name: PaletteName): void {
+  const p = PALETTES[name];
+  COLOURS.real.set(p.real);
+  COLOURS.deemed.set(p.deemed);
+  COLOURS.separate.set(p.separate);
+}
 
 /** The camera's near plane, scene units (the server's camera and orbiting). */
 const NEAR = 0.05;
@@ -48,6 +69,8 @@ export class SceneView {
   private home = { eye: new THREE.Vector3(), target: new THREE.Vector3() };
   private box: THREE.LineSegments | null = null;
   private colours: Float32Array = new Float32Array(0);
+  /** Debug drawing: a line between the two bodies of each real and deemed pair. */
+  private links: THREE.LineSegments;
 
   constructor(readonly canvas: HTMLCanvasElement) {
     // preserveDrawingBuffer: the page's tests read the canvas back to check it is drawn.
@@ -67,6 +90,100 @@ export class SceneView {
     this.camera = new THREE.PerspectiveCamera(40, 1.6, NEAR, 1000);
     this.controls = new OrbitControls(this.camera, canvas);
     this.controls.enableDamping = false;
+    const lines = new THREE.BufferGeometry();
+    lines.setAttribute("position", new THREE.BufferAttribute(new Float32Array(0), 3));
+    lines.setAttribute("color", new THREE.BufferAttribute(new Float32Array(0), 3));
+    this.links = new THREE.LineSegments(lines, new THREE.LineBasicMaterial({ vertexColors: true, depthTest: false, transparent: true, opacity: 0.9 }));
+    this.links.frustumCulled = false;
+    this.links.renderOrder = 1;
+    this.links.visible = false;
+    this.scene.add(this.links);
+  }
+
+  /**
+   * Draw a line between the centres of the bodies of each pair (`pairs`: a, b, colour), from the
+   * poses last written; an empty list (or `show` false) hides them.
+   */
+  setLinks(pairs: { a: number; b: number; c: THREE.Color }[], show: boolean): void {
+    this.links.visible = show && pairs.length > 0;
+    if (!this.links.visible) return;
+    const g = this.links.geometry;
+    let pos = g.getAttribute("position") as THREE.BufferAttribute;
+    let col = g.getAttribute("color") as THREE.BufferAttribute;
+    if (pos.count < 2 * pairs.length) {
+      const n = 2 * Math.max(pairs.length, 2 * pos.count / 2);
+      pos = new THREE.BufferAttribute(new Float32Array(3 * n), 3);
+      col = new THREE.BufferAttribute(new Float32Array(3 * n), 3);
+      pos.setUsage(THREE.DynamicDrawUsage);
+      col.setUsage(THREE.DynamicDrawUsage);
+      g.setAttribute("position", pos);
+      g.setAttribute("color", col);
+    }
+    const p = pos.array as Float32Array, c = col.array as Float32Array, m = this.poses;
+    let k = 0;
+    for (const { a, b, c: colour } of pairs) {
+      if (a >= this.bodies || b >= this.bodies) continue;
+      for (const i of [a, b]) {
+        p[3 * k] = m[16 * i + 12];
+        p[3 * k + 1] = m[16 * i + 13];
+        p[3 * k + 2] = m[16 * i + 14];
+        c[3 * k] = colour.r;
+        c[3 * k + 1] = colour.g;
+        c[3 * k + 2] = colour.b;
+        k++;
+      }
+    }
+    g.setDrawRange(0, k);
+    pos.needsUpdate = true;
+    col.needsUpdate = true;
+  }
+
+  /**
+   * The body under a point of the canvas (fractions of its width and height), through the camera
+   * in use: the nearest whose bounding sphere the ray meets, or -1.
+   */
+  pickAt(x: number, y: number): number {
+    const ray = new THREE.Raycaster();
+    ray.setFromCamera(new THREE.Vector2(2 * x - 1, 1 - 2 * y), this.camera);
+    const o = ray.ray.origin, d = ray.ray.direction, m = this.poses, r2 = this.radius * this.radius;
+    let best = -1, nearest = Infinity;
+    for (let i = 0; i < this.bodies; i++) {
+      const cx = m[16 * i + 12] - o.x, cy = m[16 * i + 13] - o.y, cz = m[16 * i + 14] - o.z;
+      const t = cx * d.x + cy * d.y + cz * d.z;
+      if (t <= 0) continue;
+      const off2 = cx * cx + cy * cy + cz * cz - t * t;
+      if (off2 > r2) continue;
+      const hit = t - Math.sqrt(r2 - off2);
+      if (hit < nearest && hit > this.camera.near) (nearest = hit), (best = i);
+    }
+    return best;
+  }
+
+  /** A body's centre on the canvas (fractions of width and height), through the camera in use. */
+  bodyOnScreen(i: number): { x: number; y: number } | null {
+    if (i < 0 || i >= this.bodies) return null;
+    const m = this.poses;
+    return this.toScreen([m[16 * i + 12], m[16 * i + 13], m[16 * i + 14]]);
+  }
+
+  /**
+   * Per body, its distance on the server's screen from (x, y) over the ellipse (rx, ry): below 1
+   * inside the foveal region. What the schedulers' priority falls off with (priority shading).
+   */
+  eccentricities(x: number, y: number, rx: number, ry: number, out: Float32Array): void {
+    const m = this.poses, e = this.homeViewProjection.elements;
+    for (let i = 0; i < this.bodies && i < out.length; i++) {
+      const o = 16 * i;
+      const px = m[o + 12], py = m[o + 13], pz = m[o + 14];
+      const w = e[3] * px + e[7] * py + e[11] * pz + e[15];
+      if (w <= 0) {
+        out[i] = Infinity;
+        continue;
+      }
+      const dx = ((e[0] * px + e[4] * py + e[8] * pz + e[12]) / w + 1) / 2 - x;
+      const dy = (1 - (e[1] * px + e[5] * py + e[9] * pz + e[13]) / w) / 2 - y;
+      out[i] = Math.sqrt((dx / rx) ** 2 + (dy / ry) ** 2);
+    }
   }
 
   /** Rebuild everything that depends on the scene: the mesh (N instances), camera and volume box. */
@@ -283,13 +400,19 @@ export class SceneView {
    * Colour every body: the plain colour (or COLOURS.dimmed with `dimmed`), then the real and
    * deemed pairs' bodies.
    */
-  colour(marks: (set: (body: number, c: THREE.Color) => void) => void, dimmed = false): void {
+  colour(
+    marks: (set: (body: number, c: THREE.Color) => void) => void,
+    dimmed = false,
+    shade: ((body: number) => number) | null = null,
+  ): void {
     const col = this.colours;
     const { r, g, b } = dimmed ? COLOURS.dimmed : COLOURS.body;
     for (let i = 0; i < col.length; i += 3) {
-      col[i] = r;
-      col[i + 1] = g;
-      col[i + 2] = b;
+      // Priority shading: the plain colour scaled by a factor per body (1 where the viewer looks).
+      const k = shade ? shade(i / 3) : 1;
+      col[i] = r * k;
+      col[i + 1] = g * k;
+      col[i + 2] = b * k;
     }
     const n = col.length / 3;
     marks((body, c) => {

@@ -26,7 +26,7 @@ import type { Message } from "@bufbuild/protobuf";
  * Describes the file foveal/v1/foveal.proto.
  */
 export const file_foveal_v1_foveal: GenFile = /*@__PURE__*/
-  fileDesc("ChZmb3ZlYWwvdjEvZm92ZWFsLnByb3RvEglmb3ZlYWwudjEijQEKCkdhemVTYW1wbGUSFgoOdHJhY2tlcl90aW1lX3MYASABKAESCQoBeBgCIAEoARIJCgF5GAMgASgBEhAKCHZhbGlkaXR5GAQgASgCEhsKA2V5ZRgFIAEoDjIOLmZvdmVhbC52MS5FeWUSFQoIZml4YXRpb24YBiABKAhIAIgBAUILCglfZml4YXRpb24iPwoPU2FtcGxlUmVqZWN0aW9uEg0KBWluZGV4GAEgASgEEg0KBWZpZWxkGAIgASgJEg4KBnJlYXNvbhgDIAEoCSKbAQoRU3RyZWFtR2F6ZVN1bW1hcnkSEAoIYWNjZXB0ZWQYASABKAQSEAoIcmVqZWN0ZWQYAiABKAQSLgoKcmVqZWN0aW9ucxgDIAMoCzIaLmZvdmVhbC52MS5TYW1wbGVSZWplY3Rpb24SHAoUbGFzdF9hY2NlcHRlZF90aW1lX3MYBCABKAESFAoMcmF0ZV9saW1pdGVkGAUgASgEIkkKD1B1c2hHYXplUmVxdWVzdBImCgdzYW1wbGVzGAEgAygLMhUuZm92ZWFsLnYxLkdhemVTYW1wbGUSDgoGc291cmNlGAIgASgJIpoBChBQdXNoR2F6ZVJlc3BvbnNlEhAKCGFjY2VwdGVkGAEgASgEEhAKCHJlamVjdGVkGAIgASgEEi4KCnJlamVjdGlvbnMYAyADKAsyGi5mb3ZlYWwudjEuU2FtcGxlUmVqZWN0aW9uEhwKFGxhc3RfYWNjZXB0ZWRfdGltZV9zGAQgASgBEhQKDHJhdGVfbGltaXRlZBgFIAEoBCJxChJXYXRjaEZyYW1lc1JlcXVlc3QSDwoHZXZlcnlfaxgBIAEoDRIVCg1pbmNsdWRlX3Bvc2VzGAIgASgIEhcKD3F1YW50aXNlZF9wb3NlcxgDIAEoCBIaChJpbmNsdWRlX2NvbGxpc2lvbnMYBCABKAgiRgoHUmF3R2F6ZRIJCgF4GAEgASgBEgkKAXkYAiABKAESDQoFYWdlX3MYAyABKAESFgoOdHJhY2tlcl90aW1lX3MYBCABKAEiswEKCEZpeGF0aW9uEgkKAXgYASABKAESCQoBeRgCIAEoARINCgVhZ2VfcxgDIAEoARIpCgZzb3VyY2UYBCABKA4yGS5mb3ZlYWwudjEuRml4YXRpb25Tb3VyY2USHwoDcmF3GAUgASgLMhIuZm92ZWFsLnYxLlJhd0dhemUSIwoFdHJhY2sYBiABKA4yFC5mb3ZlYWwudjEuR2F6ZVRyYWNrEhEKCXdpZGVuX2RlZxgHIAEoASJyCgxBdWRpdE1ldHJpY3MSHAoUdHJ1ZV9mYWxzZV9wb3NpdGl2ZXMYASABKAQSIQoZdHJ1ZV9nZW9tZXRyaWNfaW5hY2N1cmFjeRgCIAEoARIhChl0cnVlX3BlcmNlaXZlZF9pbmFjY3VyYWN5GAMgASgBIrcDCgxGcmFtZU1ldHJpY3MSGAoQY29sbGlzaW9uX3RpbWVfcxgBIAEoARIcChRnZW9tZXRyaWNfaW5hY2N1cmFjeRgCIAEoARIcChRwZXJjZWl2ZWRfaW5hY2N1cmFjeRgDIAEoARIXCg9jYW5kaWRhdGVfcGFpcnMYBCABKAQSFwoPcmVhbF9jb2xsaXNpb25zGAUgASgEEh4KFmRlZW1lZF9hdF9pbnRlcnJ1cHRpb24YBiABKAQSGgoScmVzb2x2ZWRfcGVyX2xldmVsGAcgAygEEhQKDHNwaGVyZV90ZXN0cxgIIAEoBBIYChBidWRnZXRfZXhoYXVzdGVkGAkgASgIEisKBWF1ZGl0GAogASgLMhcuZm92ZWFsLnYxLkF1ZGl0TWV0cmljc0gAiAEBEhYKDm1ldHJpY3Nfc3RyaWRlGAsgASgNEh8KF2dlb21ldHJpY19pbmFjY3VyYWN5X3NlGAwgASgBEh8KF3BlcmNlaXZlZF9pbmFjY3VyYWN5X3NlGA0gASgBEiIKGmJ1ZGdldF9zcGVudF9iZWZvcmVfbmFycm93GA4gASgIQggKBl9hdWRpdCKXAQoMUGhhc2VQcm9maWxlEhMKC2ludGVncmF0ZV9zGAEgASgBEg8KB2Jyb2FkX3MYAiABKAESEAoIbmFycm93X3MYAyABKAESEgoKcmVzcG9uc2VfcxgEIAEoARIUCgxwcmlvcml0aXNlX3MYBSABKAESEQoJbWVhc3VyZV9zGAYgASgBEhIKCnJlbnVtYmVyX3MYByABKAEiYQoFUG9zZXMSEQoJcG9zaXRpb25zGAEgASgMEhQKDG9yaWVudGF0aW9ucxgCIAEoDBIfCgZvcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIOCgZib2RpZXMYBCABKA0iegoOUXVhbnRpc2VkUG9zZXMSEQoJcG9zaXRpb25zGAEgASgMEhQKDG9yaWVudGF0aW9ucxgCIAEoDBIfCgZvcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIOCgZleHRlbnQYBCABKAESDgoGYm9kaWVzGAUgASgNIioKCkNvbGxpc2lvbnMSDAoEcmVhbBgBIAEoDBIOCgZkZWVtZWQYAiABKAwiJwoEVmVjMxIJCgF4GAEgASgBEgkKAXkYAiABKAESCQoBehgDIAEoASL5AgoFRnJhbWUSDQoFaW5kZXgYASABKAQSEgoKc2ltX3RpbWVfcxgCIAEoARIlCghmaXhhdGlvbhgDIAEoCzITLmZvdmVhbC52MS5GaXhhdGlvbhIoCgdtZXRyaWNzGAQgASgLMhcuZm92ZWFsLnYxLkZyYW1lTWV0cmljcxIoCgdwcm9maWxlGAUgASgLMhcuZm92ZWFsLnYxLlBoYXNlUHJvZmlsZRIWCg5kcm9wcGVkX2JlZm9yZRgGIAEoBBIkCgVwb3NlcxgHIAEoCzIQLmZvdmVhbC52MS5Qb3Nlc0gAiAEBEjcKD3F1YW50aXNlZF9wb3NlcxgIIAEoCzIZLmZvdmVhbC52MS5RdWFudGlzZWRQb3Nlc0gBiAEBEi4KCmNvbGxpc2lvbnMYCSABKAsyFS5mb3ZlYWwudjEuQ29sbGlzaW9uc0gCiAEBQggKBl9wb3Nlc0ISChBfcXVhbnRpc2VkX3Bvc2VzQg0KC19jb2xsaXNpb25zIg0KC0V4YWN0QnVkZ2V0Ip4BCgZCdWRnZXQSJwoFZXhhY3QYASABKAsyFi5mb3ZlYWwudjEuRXhhY3RCdWRnZXRIABIbChFpbnRlcnJ1cHRfYXRfemVybxgCIAEoCEgAEhEKB3dhbGxfbXMYAyABKAFIABIWCgxzcGhlcmVfdGVzdHMYBCABKARIABIbChFmcmFjdGlvbl9vZl9leGFjdBgFIAEoAUgAQgYKBGtpbmQiCQoHTW9kZWxGMSIUCgdNb2RlbEYyEgkKAWMYASABKAEiLAoMTW9kZWxGMlJhbmdlEg0KBWNfbWluGAEgASgBEg0KBWNfbWF4GAIgASgBIkUKB01vZGVsRjMSCgoCYzEYASABKAESCgoCYzIYAiABKAESCgoCYzMYAyABKAESCgoCZTEYBCABKAESCgoCZTIYBSABKAEi5QEKD1BlcmNlcHR1YWxNb2RlbBIgCgJmMRgBIAEoCzISLmZvdmVhbC52MS5Nb2RlbEYxSAASIAoCZjIYAiABKAsyEi5mb3ZlYWwudjEuTW9kZWxGMkgAEiAKAmYzGAMgASgLMhIuZm92ZWFsLnYxLk1vZGVsRjNIABIrCghmMl9yYW5nZRgFIAEoCzIXLmZvdmVhbC52MS5Nb2RlbEYyUmFuZ2VIABI2ChFlY2NlbnRyaWNpdHlfdW5pdBgEIAEoDjIbLmZvdmVhbC52MS5FY2NlbnRyaWNpdHlVbml0QgcKBW1vZGVsImAKB0Rpc3BsYXkSEAoId2lkdGhfcHgYASABKA0SEQoJaGVpZ2h0X3B4GAIgASgNEhMKC2RpYWdvbmFsX2luGAMgASgBEhsKE3ZpZXdpbmdfZGlzdGFuY2VfY20YBCABKAEi6gMKC1NjZW5lQ29uZmlnEg4KBmJvZGllcxgBIAEoDRIMCgRzZWVkGAIgASgEEg8KB2RlbnNpdHkYAyABKAESFAoMc2hhcGVfcmFkaXVzGAQgASgBEg0KBWRlcHRoGAUgASgNEgwKBGR0X3MYBiABKAESEQoJbWluX3NwZWVkGAcgASgBEhEKCW1heF9zcGVlZBgIIAEoARIQCghtYXhfc3BpbhgJIAEoARInCglzY2hlZHVsZXIYCiABKA4yFC5mb3ZlYWwudjEuU2NoZWR1bGVyEiIKGmVjY2VudHJpY2l0eV90aHJlc2hvbGRfZGVnGAsgASgBEiEKBmJ1ZGdldBgMIAEoCzIRLmZvdmVhbC52MS5CdWRnZXQSMgoOc2NoZWR1bGVfbW9kZWwYDSABKAsyGi5mb3ZlYWwudjEuUGVyY2VwdHVhbE1vZGVsEjEKDW1lYXN1cmVfbW9kZWwYDiABKAsyGi5mb3ZlYWwudjEuUGVyY2VwdHVhbE1vZGVsEg0KBWF1ZGl0GA8gASgIEhUKDWZyYW1lX3JhdGVfaHoYECABKAESIwoHZGlzcGxheRgRIAEoCzISLmZvdmVhbC52MS5EaXNwbGF5Eh8KBXRydXRoGBIgASgOMhAuZm92ZWFsLnYxLlRydXRoIhEKD0dldFNjZW5lUmVxdWVzdCJyCgZTcGhlcmUSCQoBeBgBIAEoAhIJCgF5GAIgASgCEgkKAXoYAyABKAISDgoGcmFkaXVzGAQgASgCEg0KBWxldmVsGAUgASgNEhMKC2ZpcnN0X2NoaWxkGAYgASgNEhMKC2NoaWxkX2NvdW50GAcgASgNIksKClNwaGVyZVRyZWUSIgoHc3BoZXJlcxgBIAMoCzIRLmZvdmVhbC52MS5TcGhlcmUSGQoRc3BoZXJlc19wZXJfbGV2ZWwYAiADKA0iagoGQ2FtZXJhEhwKA2V5ZRgBIAEoCzIPLmZvdmVhbC52MS5WZWMzEh8KBnRhcmdldBgCIAEoCzIPLmZvdmVhbC52MS5WZWMzEhEKCWZvdl95X2RlZxgDIAEoARIOCgZhc3BlY3QYBCABKAEi4wEKEFNjZW5lRGVzY3JpcHRpb24SJgoGY29uZmlnGAEgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEhMKC3ZvbHVtZV9zaWRlGAIgASgBEiYKDXZvbHVtZV9vcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIjCgR0cmVlGAQgASgLMhUuZm92ZWFsLnYxLlNwaGVyZVRyZWUSIQoGY2FtZXJhGAUgASgLMhEuZm92ZWFsLnYxLkNhbWVyYRIiCgRzdGFyGAYgASgLMhQuZm92ZWFsLnYxLlN0YXJTaGFwZSJLCglTdGFyU2hhcGUSDgoGcmFkaXVzGAEgASgBEhMKC2NvcmVfcmFkaXVzGAIgASgBEhkKEXNwaWtlX2Jhc2VfcmFkaXVzGAMgASgBImsKEENvbmZpZ3VyZVJlcXVlc3QSJgoGY29uZmlnGAEgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEi8KC3VwZGF0ZV9tYXNrGAIgASgLMhouZ29vZ2xlLnByb3RvYnVmLkZpZWxkTWFzayJXChFDb25maWd1cmVSZXNwb25zZRInCgdhcHBsaWVkGAEgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEhkKEWZpcnN0X2ZyYW1lX2luZGV4GAIgASgEIhIKEEdldFN0YXR1c1JlcXVlc3QisgIKBlN0YXR1cxIQCgh1cHRpbWVfcxgBIAEoARIOCgZmcmFtZXMYAiABKAQSCwoDZnBzGAMgASgBEhMKC3N1YnNjcmliZXJzGAQgASgNEh0KFWdhemVfc2FtcGxlc19hY2NlcHRlZBgFIAEoBBIdChVnYXplX3NhbXBsZXNfcmVqZWN0ZWQYBiABKAQSFAoMZ2F6ZV9yYXRlX2h6GAcgASgBEioKDWxhc3RfZml4YXRpb24YCCABKAsyEy5mb3ZlYWwudjEuRml4YXRpb24SJgoGY29uZmlnGAkgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEiEKGWdhemVfc2FtcGxlc19yYXRlX2xpbWl0ZWQYCiABKAQSGQoRZ2F6ZV9zb3VyY2VzX2xpdmUYCyABKA0qSgoDRXllEhMKD0VZRV9VTlNQRUNJRklFRBAAEgwKCEVZRV9MRUZUEAESDQoJRVlFX1JJR0hUEAISEQoNRVlFX0JJTk9DVUxBUhADKr4BCg5GaXhhdGlvblNvdXJjZRIfChtGSVhBVElPTl9TT1VSQ0VfVU5TUEVDSUZJRUQQABIYChRGSVhBVElPTl9TT1VSQ0VfR0FaRRABEiQKIEZJWEFUSU9OX1NPVVJDRV9GQUxMQkFDS19OT19HQVpFEAISIgoeRklYQVRJT05fU09VUkNFX0ZBTExCQUNLX1NUQUxFEAMSJwojRklYQVRJT05fU09VUkNFX0ZBTExCQUNLX1RSQUNLX0xPU1QQBCrJAQoJR2F6ZVRyYWNrEhoKFkdBWkVfVFJBQ0tfVU5TUEVDSUZJRUQQABIWChJHQVpFX1RSQUNLX05PX0dBWkUQARISCg5HQVpFX1RSQUNLX1JBVxACEhcKE0dBWkVfVFJBQ0tfRklYQVRJT04QAxIWChJHQVpFX1RSQUNLX1NBQ0NBREUQBBIWChJHQVpFX1RSQUNLX0hPTERJTkcQBRIWChJHQVpFX1RSQUNLX1dJREVORUQQBhITCg9HQVpFX1RSQUNLX0xPU1QQByrrAQoJU2NoZWR1bGVyEhkKFVNDSEVEVUxFUl9VTlNQRUNJRklFRBAAEhkKFVNDSEVEVUxFUl9ST1VORF9ST0JJThABEhgKFFNDSEVEVUxFUl9TRVFVRU5USUFMEAISHwobU0NIRURVTEVSX1NPUlRFRF9TRVFVRU5USUFMEAMSGwoXU0NIRURVTEVSX1BSSU9SSVRZX09OTFkQBBIdChlTQ0hFRFVMRVJfUFJJT1JJVFlfU09SVEVEEAUSGwoXU0NIRURVTEVSX0VYUEVDVEVEX0dBSU4QBhIUChBTQ0hFRFVMRVJfUFJJQ0VEEAcqcgoQRWNjZW50cmljaXR5VW5pdBIhCh1FQ0NFTlRSSUNJVFlfVU5JVF9VTlNQRUNJRklFRBAAEhwKGEVDQ0VOVFJJQ0lUWV9VTklUX1BJWEVMUxABEh0KGUVDQ0VOVFJJQ0lUWV9VTklUX0RFR1JFRVMQAipHCgVUcnV0aBIVChFUUlVUSF9VTlNQRUNJRklFRBAAEg8KC1RSVVRIX1NIQVBFEAESFgoSVFJVVEhfTEVBRl9TUEhFUkVTEAIyngMKBkZvdmVhbBJDCgpTdHJlYW1HYXplEhUuZm92ZWFsLnYxLkdhemVTYW1wbGUaHC5mb3ZlYWwudjEuU3RyZWFtR2F6ZVN1bW1hcnkoARJDCghQdXNoR2F6ZRIaLmZvdmVhbC52MS5QdXNoR2F6ZVJlcXVlc3QaGy5mb3ZlYWwudjEuUHVzaEdhemVSZXNwb25zZRJACgtXYXRjaEZyYW1lcxIdLmZvdmVhbC52MS5XYXRjaEZyYW1lc1JlcXVlc3QaEC5mb3ZlYWwudjEuRnJhbWUwARJDCghHZXRTY2VuZRIaLmZvdmVhbC52MS5HZXRTY2VuZVJlcXVlc3QaGy5mb3ZlYWwudjEuU2NlbmVEZXNjcmlwdGlvbhJGCglDb25maWd1cmUSGy5mb3ZlYWwudjEuQ29uZmlndXJlUmVxdWVzdBocLmZvdmVhbC52MS5Db25maWd1cmVSZXNwb25zZRI7CglHZXRTdGF0dXMSGy5mb3ZlYWwudjEuR2V0U3RhdHVzUmVxdWVzdBoRLmZvdmVhbC52MS5TdGF0dXNiBnByb3RvMw", [file_google_protobuf_field_mask]);
+  fileDesc("ChZmb3ZlYWwvdjEvZm92ZWFsLnByb3RvEglmb3ZlYWwudjEijQEKCkdhemVTYW1wbGUSFgoOdHJhY2tlcl90aW1lX3MYASABKAESCQoBeBgCIAEoARIJCgF5GAMgASgBEhAKCHZhbGlkaXR5GAQgASgCEhsKA2V5ZRgFIAEoDjIOLmZvdmVhbC52MS5FeWUSFQoIZml4YXRpb24YBiABKAhIAIgBAUILCglfZml4YXRpb24iPwoPU2FtcGxlUmVqZWN0aW9uEg0KBWluZGV4GAEgASgEEg0KBWZpZWxkGAIgASgJEg4KBnJlYXNvbhgDIAEoCSKbAQoRU3RyZWFtR2F6ZVN1bW1hcnkSEAoIYWNjZXB0ZWQYASABKAQSEAoIcmVqZWN0ZWQYAiABKAQSLgoKcmVqZWN0aW9ucxgDIAMoCzIaLmZvdmVhbC52MS5TYW1wbGVSZWplY3Rpb24SHAoUbGFzdF9hY2NlcHRlZF90aW1lX3MYBCABKAESFAoMcmF0ZV9saW1pdGVkGAUgASgEIkkKD1B1c2hHYXplUmVxdWVzdBImCgdzYW1wbGVzGAEgAygLMhUuZm92ZWFsLnYxLkdhemVTYW1wbGUSDgoGc291cmNlGAIgASgJIpoBChBQdXNoR2F6ZVJlc3BvbnNlEhAKCGFjY2VwdGVkGAEgASgEEhAKCHJlamVjdGVkGAIgASgEEi4KCnJlamVjdGlvbnMYAyADKAsyGi5mb3ZlYWwudjEuU2FtcGxlUmVqZWN0aW9uEhwKFGxhc3RfYWNjZXB0ZWRfdGltZV9zGAQgASgBEhQKDHJhdGVfbGltaXRlZBgFIAEoBCJxChJXYXRjaEZyYW1lc1JlcXVlc3QSDwoHZXZlcnlfaxgBIAEoDRIVCg1pbmNsdWRlX3Bvc2VzGAIgASgIEhcKD3F1YW50aXNlZF9wb3NlcxgDIAEoCBIaChJpbmNsdWRlX2NvbGxpc2lvbnMYBCABKAgiRgoHUmF3R2F6ZRIJCgF4GAEgASgBEgkKAXkYAiABKAESDQoFYWdlX3MYAyABKAESFgoOdHJhY2tlcl90aW1lX3MYBCABKAEiswEKCEZpeGF0aW9uEgkKAXgYASABKAESCQoBeRgCIAEoARINCgVhZ2VfcxgDIAEoARIpCgZzb3VyY2UYBCABKA4yGS5mb3ZlYWwudjEuRml4YXRpb25Tb3VyY2USHwoDcmF3GAUgASgLMhIuZm92ZWFsLnYxLlJhd0dhemUSIwoFdHJhY2sYBiABKA4yFC5mb3ZlYWwudjEuR2F6ZVRyYWNrEhEKCXdpZGVuX2RlZxgHIAEoASJyCgxBdWRpdE1ldHJpY3MSHAoUdHJ1ZV9mYWxzZV9wb3NpdGl2ZXMYASABKAQSIQoZdHJ1ZV9nZW9tZXRyaWNfaW5hY2N1cmFjeRgCIAEoARIhChl0cnVlX3BlcmNlaXZlZF9pbmFjY3VyYWN5GAMgASgBIrcDCgxGcmFtZU1ldHJpY3MSGAoQY29sbGlzaW9uX3RpbWVfcxgBIAEoARIcChRnZW9tZXRyaWNfaW5hY2N1cmFjeRgCIAEoARIcChRwZXJjZWl2ZWRfaW5hY2N1cmFjeRgDIAEoARIXCg9jYW5kaWRhdGVfcGFpcnMYBCABKAQSFwoPcmVhbF9jb2xsaXNpb25zGAUgASgEEh4KFmRlZW1lZF9hdF9pbnRlcnJ1cHRpb24YBiABKAQSGgoScmVzb2x2ZWRfcGVyX2xldmVsGAcgAygEEhQKDHNwaGVyZV90ZXN0cxgIIAEoBBIYChBidWRnZXRfZXhoYXVzdGVkGAkgASgIEisKBWF1ZGl0GAogASgLMhcuZm92ZWFsLnYxLkF1ZGl0TWV0cmljc0gAiAEBEhYKDm1ldHJpY3Nfc3RyaWRlGAsgASgNEh8KF2dlb21ldHJpY19pbmFjY3VyYWN5X3NlGAwgASgBEh8KF3BlcmNlaXZlZF9pbmFjY3VyYWN5X3NlGA0gASgBEiIKGmJ1ZGdldF9zcGVudF9iZWZvcmVfbmFycm93GA4gASgIQggKBl9hdWRpdCKXAQoMUGhhc2VQcm9maWxlEhMKC2ludGVncmF0ZV9zGAEgASgBEg8KB2Jyb2FkX3MYAiABKAESEAoIbmFycm93X3MYAyABKAESEgoKcmVzcG9uc2VfcxgEIAEoARIUCgxwcmlvcml0aXNlX3MYBSABKAESEQoJbWVhc3VyZV9zGAYgASgBEhIKCnJlbnVtYmVyX3MYByABKAEiYQoFUG9zZXMSEQoJcG9zaXRpb25zGAEgASgMEhQKDG9yaWVudGF0aW9ucxgCIAEoDBIfCgZvcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIOCgZib2RpZXMYBCABKA0iegoOUXVhbnRpc2VkUG9zZXMSEQoJcG9zaXRpb25zGAEgASgMEhQKDG9yaWVudGF0aW9ucxgCIAEoDBIfCgZvcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIOCgZleHRlbnQYBCABKAESDgoGYm9kaWVzGAUgASgNIioKCkNvbGxpc2lvbnMSDAoEcmVhbBgBIAEoDBIOCgZkZWVtZWQYAiABKAwiJwoEVmVjMxIJCgF4GAEgASgBEgkKAXkYAiABKAESCQoBehgDIAEoASL5AgoFRnJhbWUSDQoFaW5kZXgYASABKAQSEgoKc2ltX3RpbWVfcxgCIAEoARIlCghmaXhhdGlvbhgDIAEoCzITLmZvdmVhbC52MS5GaXhhdGlvbhIoCgdtZXRyaWNzGAQgASgLMhcuZm92ZWFsLnYxLkZyYW1lTWV0cmljcxIoCgdwcm9maWxlGAUgASgLMhcuZm92ZWFsLnYxLlBoYXNlUHJvZmlsZRIWCg5kcm9wcGVkX2JlZm9yZRgGIAEoBBIkCgVwb3NlcxgHIAEoCzIQLmZvdmVhbC52MS5Qb3Nlc0gAiAEBEjcKD3F1YW50aXNlZF9wb3NlcxgIIAEoCzIZLmZvdmVhbC52MS5RdWFudGlzZWRQb3Nlc0gBiAEBEi4KCmNvbGxpc2lvbnMYCSABKAsyFS5mb3ZlYWwudjEuQ29sbGlzaW9uc0gCiAEBQggKBl9wb3Nlc0ISChBfcXVhbnRpc2VkX3Bvc2VzQg0KC19jb2xsaXNpb25zIg0KC0V4YWN0QnVkZ2V0Ip4BCgZCdWRnZXQSJwoFZXhhY3QYASABKAsyFi5mb3ZlYWwudjEuRXhhY3RCdWRnZXRIABIbChFpbnRlcnJ1cHRfYXRfemVybxgCIAEoCEgAEhEKB3dhbGxfbXMYAyABKAFIABIWCgxzcGhlcmVfdGVzdHMYBCABKARIABIbChFmcmFjdGlvbl9vZl9leGFjdBgFIAEoAUgAQgYKBGtpbmQiCQoHTW9kZWxGMSIUCgdNb2RlbEYyEgkKAWMYASABKAEiLAoMTW9kZWxGMlJhbmdlEg0KBWNfbWluGAEgASgBEg0KBWNfbWF4GAIgASgBIkUKB01vZGVsRjMSCgoCYzEYASABKAESCgoCYzIYAiABKAESCgoCYzMYAyABKAESCgoCZTEYBCABKAESCgoCZTIYBSABKAEi5QEKD1BlcmNlcHR1YWxNb2RlbBIgCgJmMRgBIAEoCzISLmZvdmVhbC52MS5Nb2RlbEYxSAASIAoCZjIYAiABKAsyEi5mb3ZlYWwudjEuTW9kZWxGMkgAEiAKAmYzGAMgASgLMhIuZm92ZWFsLnYxLk1vZGVsRjNIABIrCghmMl9yYW5nZRgFIAEoCzIXLmZvdmVhbC52MS5Nb2RlbEYyUmFuZ2VIABI2ChFlY2NlbnRyaWNpdHlfdW5pdBgEIAEoDjIbLmZvdmVhbC52MS5FY2NlbnRyaWNpdHlVbml0QgcKBW1vZGVsImAKB0Rpc3BsYXkSEAoId2lkdGhfcHgYASABKA0SEQoJaGVpZ2h0X3B4GAIgASgNEhMKC2RpYWdvbmFsX2luGAMgASgBEhsKE3ZpZXdpbmdfZGlzdGFuY2VfY20YBCABKAEi6gMKC1NjZW5lQ29uZmlnEg4KBmJvZGllcxgBIAEoDRIMCgRzZWVkGAIgASgEEg8KB2RlbnNpdHkYAyABKAESFAoMc2hhcGVfcmFkaXVzGAQgASgBEg0KBWRlcHRoGAUgASgNEgwKBGR0X3MYBiABKAESEQoJbWluX3NwZWVkGAcgASgBEhEKCW1heF9zcGVlZBgIIAEoARIQCghtYXhfc3BpbhgJIAEoARInCglzY2hlZHVsZXIYCiABKA4yFC5mb3ZlYWwudjEuU2NoZWR1bGVyEiIKGmVjY2VudHJpY2l0eV90aHJlc2hvbGRfZGVnGAsgASgBEiEKBmJ1ZGdldBgMIAEoCzIRLmZvdmVhbC52MS5CdWRnZXQSMgoOc2NoZWR1bGVfbW9kZWwYDSABKAsyGi5mb3ZlYWwudjEuUGVyY2VwdHVhbE1vZGVsEjEKDW1lYXN1cmVfbW9kZWwYDiABKAsyGi5mb3ZlYWwudjEuUGVyY2VwdHVhbE1vZGVsEg0KBWF1ZGl0GA8gASgIEhUKDWZyYW1lX3JhdGVfaHoYECABKAESIwoHZGlzcGxheRgRIAEoCzISLmZvdmVhbC52MS5EaXNwbGF5Eh8KBXRydXRoGBIgASgOMhAuZm92ZWFsLnYxLlRydXRoIhEKD0dldFNjZW5lUmVxdWVzdCJyCgZTcGhlcmUSCQoBeBgBIAEoAhIJCgF5GAIgASgCEgkKAXoYAyABKAISDgoGcmFkaXVzGAQgASgCEg0KBWxldmVsGAUgASgNEhMKC2ZpcnN0X2NoaWxkGAYgASgNEhMKC2NoaWxkX2NvdW50GAcgASgNIksKClNwaGVyZVRyZWUSIgoHc3BoZXJlcxgBIAMoCzIRLmZvdmVhbC52MS5TcGhlcmUSGQoRc3BoZXJlc19wZXJfbGV2ZWwYAiADKA0iagoGQ2FtZXJhEhwKA2V5ZRgBIAEoCzIPLmZvdmVhbC52MS5WZWMzEh8KBnRhcmdldBgCIAEoCzIPLmZvdmVhbC52MS5WZWMzEhEKCWZvdl95X2RlZxgDIAEoARIOCgZhc3BlY3QYBCABKAEi4wEKEFNjZW5lRGVzY3JpcHRpb24SJgoGY29uZmlnGAEgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEhMKC3ZvbHVtZV9zaWRlGAIgASgBEiYKDXZvbHVtZV9vcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIjCgR0cmVlGAQgASgLMhUuZm92ZWFsLnYxLlNwaGVyZVRyZWUSIQoGY2FtZXJhGAUgASgLMhEuZm92ZWFsLnYxLkNhbWVyYRIiCgRzdGFyGAYgASgLMhQuZm92ZWFsLnYxLlN0YXJTaGFwZSJLCglTdGFyU2hhcGUSDgoGcmFkaXVzGAEgASgBEhMKC2NvcmVfcmFkaXVzGAIgASgBEhkKEXNwaWtlX2Jhc2VfcmFkaXVzGAMgASgBImsKEENvbmZpZ3VyZVJlcXVlc3QSJgoGY29uZmlnGAEgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEi8KC3VwZGF0ZV9tYXNrGAIgASgLMhouZ29vZ2xlLnByb3RvYnVmLkZpZWxkTWFzayJXChFDb25maWd1cmVSZXNwb25zZRInCgdhcHBsaWVkGAEgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEhkKEWZpcnN0X2ZyYW1lX2luZGV4GAIgASgEIhIKEEdldFN0YXR1c1JlcXVlc3QiwgIKBlN0YXR1cxIQCgh1cHRpbWVfcxgBIAEoARIOCgZmcmFtZXMYAiABKAQSCwoDZnBzGAMgASgBEhMKC3N1YnNjcmliZXJzGAQgASgNEh0KFWdhemVfc2FtcGxlc19hY2NlcHRlZBgFIAEoBBIdChVnYXplX3NhbXBsZXNfcmVqZWN0ZWQYBiABKAQSFAoMZ2F6ZV9yYXRlX2h6GAcgASgBEioKDWxhc3RfZml4YXRpb24YCCABKAsyEy5mb3ZlYWwudjEuRml4YXRpb24SJgoGY29uZmlnGAkgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEiEKGWdhemVfc2FtcGxlc19yYXRlX2xpbWl0ZWQYCiABKAQSGQoRZ2F6ZV9zb3VyY2VzX2xpdmUYCyABKA0SDgoGcGF1c2VkGAwgASgIIg4KDFBhdXNlUmVxdWVzdCIPCg1SZXN1bWVSZXF1ZXN0Ih0KC1N0ZXBSZXF1ZXN0Eg4KBmZyYW1lcxgBIAEoDSIrCglMb29wU3RhdGUSDgoGcGF1c2VkGAEgASgIEg4KBmZyYW1lcxgCIAEoBCIsCg5SZXN0YXJ0UmVxdWVzdBIRCgRzZWVkGAEgASgESACIAQFCBwoFX3NlZWQiIgoSSW5zcGVjdEJvZHlSZXF1ZXN0EgwKBGJvZHkYASABKA0ipAEKDlBhaXJJbnNwZWN0aW9uEg0KBW90aGVyGAEgASgNEiUKBnN0YXR1cxgCIAEoDjIVLmZvdmVhbC52MS5QYWlyU3RhdHVzEg0KBWxldmVsGAMgASgNEhMKC290aGVyX2xldmVsGAQgASgNEhYKDnJlc29sdmVkX2xldmVsGAUgASgNEhAKCHByaW9yaXR5GAYgASgBEg4KBmZvdmVhbBgHIAEoCCJyCg5Cb2R5SW5zcGVjdGlvbhITCgtmcmFtZV9pbmRleBgBIAEoBBIMCgRib2R5GAIgASgNEigKBXBhaXJzGAMgAygLMhkuZm92ZWFsLnYxLlBhaXJJbnNwZWN0aW9uEhMKC3BhaXJzX3RvdGFsGAQgASgNKkoKA0V5ZRITCg9FWUVfVU5TUEVDSUZJRUQQABIMCghFWUVfTEVGVBABEg0KCUVZRV9SSUdIVBACEhEKDUVZRV9CSU5PQ1VMQVIQAyq+AQoORml4YXRpb25Tb3VyY2USHwobRklYQVRJT05fU09VUkNFX1VOU1BFQ0lGSUVEEAASGAoURklYQVRJT05fU09VUkNFX0dBWkUQARIkCiBGSVhBVElPTl9TT1VSQ0VfRkFMTEJBQ0tfTk9fR0FaRRACEiIKHkZJWEFUSU9OX1NPVVJDRV9GQUxMQkFDS19TVEFMRRADEicKI0ZJWEFUSU9OX1NPVVJDRV9GQUxMQkFDS19UUkFDS19MT1NUEAQqyQEKCUdhemVUcmFjaxIaChZHQVpFX1RSQUNLX1VOU1BFQ0lGSUVEEAASFgoSR0FaRV9UUkFDS19OT19HQVpFEAESEgoOR0FaRV9UUkFDS19SQVcQAhIXChNHQVpFX1RSQUNLX0ZJWEFUSU9OEAMSFgoSR0FaRV9UUkFDS19TQUNDQURFEAQSFgoSR0FaRV9UUkFDS19IT0xESU5HEAUSFgoSR0FaRV9UUkFDS19XSURFTkVEEAYSEwoPR0FaRV9UUkFDS19MT1NUEAcq6wEKCVNjaGVkdWxlchIZChVTQ0hFRFVMRVJfVU5TUEVDSUZJRUQQABIZChVTQ0hFRFVMRVJfUk9VTkRfUk9CSU4QARIYChRTQ0hFRFVMRVJfU0VRVUVOVElBTBACEh8KG1NDSEVEVUxFUl9TT1JURURfU0VRVUVOVElBTBADEhsKF1NDSEVEVUxFUl9QUklPUklUWV9PTkxZEAQSHQoZU0NIRURVTEVSX1BSSU9SSVRZX1NPUlRFRBAFEhsKF1NDSEVEVUxFUl9FWFBFQ1RFRF9HQUlOEAYSFAoQU0NIRURVTEVSX1BSSUNFRBAHKnIKEEVjY2VudHJpY2l0eVVuaXQSIQodRUNDRU5UUklDSVRZX1VOSVRfVU5TUEVDSUZJRUQQABIcChhFQ0NFTlRSSUNJVFlfVU5JVF9QSVhFTFMQARIdChlFQ0NFTlRSSUNJVFlfVU5JVF9ERUdSRUVTEAIqRwoFVHJ1dGgSFQoRVFJVVEhfVU5TUEVDSUZJRUQQABIPCgtUUlVUSF9TSEFQRRABEhYKElRSVVRIX0xFQUZfU1BIRVJFUxACKqgBCgpQYWlyU3RhdHVzEhsKF1BBSVJfU1RBVFVTX1VOU1BFQ0lGSUVEEAASGAoUUEFJUl9TVEFUVVNfVU5URVNURUQQARIWChJQQUlSX1NUQVRVU19BQ1RJVkUQAhIZChVQQUlSX1NUQVRVU19DT0xMSURJTkcQAxIYChRQQUlSX1NUQVRVU19TRVBBUkFURRAEEhYKElBBSVJfU1RBVFVTX0RFRU1FRBAFMtMFCgZGb3ZlYWwSQwoKU3RyZWFtR2F6ZRIVLmZvdmVhbC52MS5HYXplU2FtcGxlGhwuZm92ZWFsLnYxLlN0cmVhbUdhemVTdW1tYXJ5KAESQwoIUHVzaEdhemUSGi5mb3ZlYWwudjEuUHVzaEdhemVSZXF1ZXN0GhsuZm92ZWFsLnYxLlB1c2hHYXplUmVzcG9uc2USQAoLV2F0Y2hGcmFtZXMSHS5mb3ZlYWwudjEuV2F0Y2hGcmFtZXNSZXF1ZXN0GhAuZm92ZWFsLnYxLkZyYW1lMAESQwoIR2V0U2NlbmUSGi5mb3ZlYWwudjEuR2V0U2NlbmVSZXF1ZXN0GhsuZm92ZWFsLnYxLlNjZW5lRGVzY3JpcHRpb24SRgoJQ29uZmlndXJlEhsuZm92ZWFsLnYxLkNvbmZpZ3VyZVJlcXVlc3QaHC5mb3ZlYWwudjEuQ29uZmlndXJlUmVzcG9uc2USOwoJR2V0U3RhdHVzEhsuZm92ZWFsLnYxLkdldFN0YXR1c1JlcXVlc3QaES5mb3ZlYWwudjEuU3RhdHVzEjYKBVBhdXNlEhcuZm92ZWFsLnYxLlBhdXNlUmVxdWVzdBoULmZvdmVhbC52MS5Mb29wU3RhdGUSOAoGUmVzdW1lEhguZm92ZWFsLnYxLlJlc3VtZVJlcXVlc3QaFC5mb3ZlYWwudjEuTG9vcFN0YXRlEjQKBFN0ZXASFi5mb3ZlYWwudjEuU3RlcFJlcXVlc3QaFC5mb3ZlYWwudjEuTG9vcFN0YXRlEkIKB1Jlc3RhcnQSGS5mb3ZlYWwudjEuUmVzdGFydFJlcXVlc3QaHC5mb3ZlYWwudjEuQ29uZmlndXJlUmVzcG9uc2USRwoLSW5zcGVjdEJvZHkSHS5mb3ZlYWwudjEuSW5zcGVjdEJvZHlSZXF1ZXN0GhkuZm92ZWFsLnYxLkJvZHlJbnNwZWN0aW9uYgZwcm90bzM", [file_google_protobuf_field_mask]);
 
 /**
  * One gaze sample from an eye tracker.
@@ -255,7 +255,8 @@ export const PushGazeResponseSchema: GenMessage<PushGazeResponse> = /*@__PURE__*
  */
 export type WatchFramesRequest = Message<"foveal.v1.WatchFramesRequest"> & {
   /**
-   * Send every k-th frame (frames whose index is a multiple of k). 0 and 1 both mean every frame.
+   * Send every k-th frame (frames whose index is a multiple of k), and every frame simulated by
+   * Step. 0 and 1 both mean every frame.
    *
    * @generated from field: uint32 every_k = 1;
    */
@@ -1702,6 +1703,13 @@ export type Status = Message<"foveal.v1.Status"> & {
    * @generated from field: uint32 gaze_sources_live = 11;
    */
   gazeSourcesLive: number;
+
+  /**
+   * Whether the frame loop is paused (Pause); `frames` then stays put, and `fps` is 0.
+   *
+   * @generated from field: bool paused = 12;
+   */
+  paused: boolean;
 };
 
 /**
@@ -1710,6 +1718,233 @@ export type Status = Message<"foveal.v1.Status"> & {
  */
 export const StatusSchema: GenMessage<Status> = /*@__PURE__*/
   messageDesc(file_foveal_v1_foveal, 34);
+
+/**
+ * Request of Pause (no fields).
+ *
+ * @generated from message foveal.v1.PauseRequest
+ */
+export type PauseRequest = Message<"foveal.v1.PauseRequest"> & {
+};
+
+/**
+ * Describes the message foveal.v1.PauseRequest.
+ * Use `create(PauseRequestSchema)` to create a new message.
+ */
+export const PauseRequestSchema: GenMessage<PauseRequest> = /*@__PURE__*/
+  messageDesc(file_foveal_v1_foveal, 35);
+
+/**
+ * Request of Resume (no fields).
+ *
+ * @generated from message foveal.v1.ResumeRequest
+ */
+export type ResumeRequest = Message<"foveal.v1.ResumeRequest"> & {
+};
+
+/**
+ * Describes the message foveal.v1.ResumeRequest.
+ * Use `create(ResumeRequestSchema)` to create a new message.
+ */
+export const ResumeRequestSchema: GenMessage<ResumeRequest> = /*@__PURE__*/
+  messageDesc(file_foveal_v1_foveal, 36);
+
+/**
+ * Request of Step.
+ *
+ * @generated from message foveal.v1.StepRequest
+ */
+export type StepRequest = Message<"foveal.v1.StepRequest"> & {
+  /**
+   * Frames to simulate (count), 1..=600; 0 means 1.
+   *
+   * @generated from field: uint32 frames = 1;
+   */
+  frames: number;
+};
+
+/**
+ * Describes the message foveal.v1.StepRequest.
+ * Use `create(StepRequestSchema)` to create a new message.
+ */
+export const StepRequestSchema: GenMessage<StepRequest> = /*@__PURE__*/
+  messageDesc(file_foveal_v1_foveal, 37);
+
+/**
+ * The frame loop's state after a Pause, Resume or Step.
+ *
+ * @generated from message foveal.v1.LoopState
+ */
+export type LoopState = Message<"foveal.v1.LoopState"> & {
+  /**
+   * Whether the loop is paused.
+   *
+   * @generated from field: bool paused = 1;
+   */
+  paused: boolean;
+
+  /**
+   * Frames simulated since the server started (count): the index the next frame will have.
+   *
+   * @generated from field: uint64 frames = 2;
+   */
+  frames: bigint;
+};
+
+/**
+ * Describes the message foveal.v1.LoopState.
+ * Use `create(LoopStateSchema)` to create a new message.
+ */
+export const LoopStateSchema: GenMessage<LoopState> = /*@__PURE__*/
+  messageDesc(file_foveal_v1_foveal, 38);
+
+/**
+ * Request of Restart.
+ *
+ * @generated from message foveal.v1.RestartRequest
+ */
+export type RestartRequest = Message<"foveal.v1.RestartRequest"> & {
+  /**
+   * The new scene's seed; unset keeps the seed in force (the same scene again). 0 is a seed.
+   *
+   * @generated from field: optional uint64 seed = 1;
+   */
+  seed?: bigint | undefined;
+};
+
+/**
+ * Describes the message foveal.v1.RestartRequest.
+ * Use `create(RestartRequestSchema)` to create a new message.
+ */
+export const RestartRequestSchema: GenMessage<RestartRequest> = /*@__PURE__*/
+  messageDesc(file_foveal_v1_foveal, 39);
+
+/**
+ * Request of InspectBody.
+ *
+ * @generated from message foveal.v1.InspectBodyRequest
+ */
+export type InspectBodyRequest = Message<"foveal.v1.InspectBodyRequest"> & {
+  /**
+   * The body, by its index in the frame's poses (0-based).
+   *
+   * @generated from field: uint32 body = 1;
+   */
+  body: number;
+};
+
+/**
+ * Describes the message foveal.v1.InspectBodyRequest.
+ * Use `create(InspectBodyRequestSchema)` to create a new message.
+ */
+export const InspectBodyRequestSchema: GenMessage<InspectBodyRequest> = /*@__PURE__*/
+  messageDesc(file_foveal_v1_foveal, 40);
+
+/**
+ * One candidate pair of the inspected body.
+ *
+ * @generated from message foveal.v1.PairInspection
+ */
+export type PairInspection = Message<"foveal.v1.PairInspection"> & {
+  /**
+   * The other body, by index in the frame's poses.
+   *
+   * @generated from field: uint32 other = 1;
+   */
+  other: number;
+
+  /**
+   * Where the narrow phase left the pair.
+   *
+   * @generated from field: foveal.v1.PairStatus status = 2;
+   */
+  status: PairStatus;
+
+  /**
+   * Sphere-tree level reached in the inspected body's tree (1 = root; 0 while untested).
+   *
+   * @generated from field: uint32 level = 3;
+   */
+  level: number;
+
+  /**
+   * Sphere-tree level reached in the other body's tree (1 = root; 0 while untested).
+   *
+   * @generated from field: uint32 other_level = 4;
+   */
+  otherLevel: number;
+
+  /**
+   * Level at which the pair was resolved (the larger of the two), 0 if it was not resolved.
+   *
+   * @generated from field: uint32 resolved_level = 5;
+   */
+  resolvedLevel: number;
+
+  /**
+   * The scheduling model's priority of the pair (F of its untested evidence, unitless, higher
+   * first); 0 when the frame did not prioritise it.
+   *
+   * @generated from field: double priority = 6;
+   */
+  priority: number;
+
+  /**
+   * Whether the pair was within the priority schedulers' eccentricity threshold (foveal queue).
+   *
+   * @generated from field: bool foveal = 7;
+   */
+  foveal: boolean;
+};
+
+/**
+ * Describes the message foveal.v1.PairInspection.
+ * Use `create(PairInspectionSchema)` to create a new message.
+ */
+export const PairInspectionSchema: GenMessage<PairInspection> = /*@__PURE__*/
+  messageDesc(file_foveal_v1_foveal, 41);
+
+/**
+ * A body's candidate pairs in the latest frame.
+ *
+ * @generated from message foveal.v1.BodyInspection
+ */
+export type BodyInspection = Message<"foveal.v1.BodyInspection"> & {
+  /**
+   * The frame the pairs are from (Frame.index).
+   *
+   * @generated from field: uint64 frame_index = 1;
+   */
+  frameIndex: bigint;
+
+  /**
+   * The body inspected.
+   *
+   * @generated from field: uint32 body = 2;
+   */
+  body: number;
+
+  /**
+   * Its candidate pairs, ordered by the other body's index; at most 256.
+   *
+   * @generated from field: repeated foveal.v1.PairInspection pairs = 3;
+   */
+  pairs: PairInspection[];
+
+  /**
+   * How many candidate pairs the body had (count; more than `pairs` holds when over 256).
+   *
+   * @generated from field: uint32 pairs_total = 4;
+   */
+  pairsTotal: number;
+};
+
+/**
+ * Describes the message foveal.v1.BodyInspection.
+ * Use `create(BodyInspectionSchema)` to create a new message.
+ */
+export const BodyInspectionSchema: GenMessage<BodyInspection> = /*@__PURE__*/
+  messageDesc(file_foveal_v1_foveal, 42);
 
 /**
  * Which eye a gaze sample comes from.
@@ -2013,6 +2248,61 @@ export const TruthSchema: GenEnum<Truth> = /*@__PURE__*/
   enumDesc(file_foveal_v1_foveal, 5);
 
 /**
+ * How far the narrow phase got with a candidate pair in a frame.
+ *
+ * @generated from enum foveal.v1.PairStatus
+ */
+export enum PairStatus {
+  /**
+   * Not said.
+   *
+   * @generated from enum value: PAIR_STATUS_UNSPECIFIED = 0;
+   */
+  UNSPECIFIED = 0,
+
+  /**
+   * Not tested: the frame ended (or the budget ran out) before its first sphere test.
+   *
+   * @generated from enum value: PAIR_STATUS_UNTESTED = 1;
+   */
+  UNTESTED = 1,
+
+  /**
+   * Overlap found above the leaf level and more steps needed (only within a frame).
+   *
+   * @generated from enum value: PAIR_STATUS_ACTIVE = 2;
+   */
+  ACTIVE = 2,
+
+  /**
+   * Resolved as colliding under the scene's truth: a real collision.
+   *
+   * @generated from enum value: PAIR_STATUS_COLLIDING = 3;
+   */
+  COLLIDING = 3,
+
+  /**
+   * Resolved as not colliding.
+   *
+   * @generated from enum value: PAIR_STATUS_SEPARATE = 4;
+   */
+  SEPARATE = 4,
+
+  /**
+   * Unresolved when the budget ran out: deemed colliding.
+   *
+   * @generated from enum value: PAIR_STATUS_DEEMED = 5;
+   */
+  DEEMED = 5,
+}
+
+/**
+ * Describes the enum foveal.v1.PairStatus.
+ */
+export const PairStatusSchema: GenEnum<PairStatus> = /*@__PURE__*/
+  enumDesc(file_foveal_v1_foveal, 6);
+
+/**
  * The foveal simulation service.
  *
  * @generated from service foveal.v1.Foveal
@@ -2085,6 +2375,62 @@ export const Foveal: GenService<{
     methodKind: "unary";
     input: typeof GetStatusRequestSchema;
     output: typeof StatusSchema;
+  },
+  /**
+   * Unary: stop the frame loop at its next frame boundary (role admin). No frame is simulated or
+   * published until Resume or Step; gaze is still taken in. Pausing a paused loop changes nothing.
+   *
+   * @generated from rpc foveal.v1.Foveal.Pause
+   */
+  pause: {
+    methodKind: "unary";
+    input: typeof PauseRequestSchema;
+    output: typeof LoopStateSchema;
+  },
+  /**
+   * Unary: run the frame loop again at its frame rate from now (role admin). Resuming a running
+   * loop changes nothing.
+   *
+   * @generated from rpc foveal.v1.Foveal.Resume
+   */
+  resume: {
+    methodKind: "unary";
+    input: typeof ResumeRequestSchema;
+    output: typeof LoopStateSchema;
+  },
+  /**
+   * Unary: simulate StepRequest.frames frames of a paused loop, back to back, and answer once they
+   * are done (role admin); the loop stays paused. FAILED_PRECONDITION while the loop runs.
+   *
+   * @generated from rpc foveal.v1.Foveal.Step
+   */
+  step: {
+    methodKind: "unary";
+    input: typeof StepRequestSchema;
+    output: typeof LoopStateSchema;
+  },
+  /**
+   * Unary: restart the scene from its initial state (role admin), with a new seed if one is
+   * given: Configure with `update_mask` ["seed"], or with nothing changed when no seed is given.
+   * A paused loop stays paused.
+   *
+   * @generated from rpc foveal.v1.Foveal.Restart
+   */
+  restart: {
+    methodKind: "unary";
+    input: typeof RestartRequestSchema;
+    output: typeof ConfigureResponseSchema;
+  },
+  /**
+   * Unary: one body's candidate pairs in the latest frame and how far the narrow phase got with
+   * each (role viewer), for picking a body in a viewer.
+   *
+   * @generated from rpc foveal.v1.Foveal.InspectBody
+   */
+  inspectBody: {
+    methodKind: "unary";
+    input: typeof InspectBodyRequestSchema;
+    output: typeof BodyInspectionSchema;
   },
 }> = /*@__PURE__*/
   serviceDesc(file_foveal_v1_foveal, 0);
