@@ -778,7 +778,7 @@ pub fn run_frames_parts(
                 continue;
             };
             let fb = FrameBudget::Wall((x * base_ns).round() as u64);
-            for _ in 0..foveal_engine::collider::LEARN_FRAMES {
+            for _ in 0..foveal_engine::budget::LEARN_FRAMES {
                 let mut r = FrameReport::default();
                 let mut prof = PhaseProfile::default();
                 run.collider.warm();

@@ -17,7 +17,8 @@
 //! - [`broad_phase`]: sweep and prune with temporal coherence at the paper's N, a uniform grid
 //!   beyond; chosen by the scene.
 //! - [`narrow_phase`]: per-pair traversal state, one level of one tree per step.
-//! - [`budget`]: wall-clock and sphere-test budgets, the [`Clock`] trait.
+//! - [`budget`]: the budget policy: wall-clock and sphere-test budgets, the [`Clock`] trait, the
+//!   narrow phase's meter, each frame's plan, the guard band, shedding and the cost gates.
 //! - [`schedule`]: round-robin, sequential, sorted, priority-queue and expected-gain schedulers.
 //! - [`perception`], [`fixation`]: camera, display, visual angle, F1/F2/F3.
 //! - [`falloff`]: the models' eccentricity fall-off tabulated for per-pair lookup without libm.
@@ -26,8 +27,7 @@
 //! - [`report`]: the frame record, the phase profile and the audit.
 //! - [`collider`]: prioritise, narrow phase, metrics and audit on frames handed in (closed and
 //!   open loop); [`clairvoyant`]: the least true P any schedule could reach with a budget.
-//! - [`shedding`]: what a whole-frame wall-clock budget sheds at large N, in perceptual order.
-//! - [`simulation`]: one frame of the main loop; [`export`]: a frame as JSON.
+//! - [`simulation`]: one frame of the main loop as named, timed stages; [`export`]: a frame as JSON.
 //! - [`soak`]: long-run invariant checks for the stress suite.
 //!
 //! ```
@@ -53,7 +53,6 @@ pub mod config;
 pub mod export;
 pub mod falloff;
 pub mod fixation;
-pub mod guard;
 pub mod math;
 pub mod metrics;
 pub mod narrow_phase;
@@ -65,7 +64,6 @@ pub mod response;
 pub mod rng;
 pub mod schedule;
 pub mod shape;
-pub mod shedding;
 pub mod simulation;
 pub mod soak;
 pub mod sphere_tree;
