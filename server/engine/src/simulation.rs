@@ -6,7 +6,7 @@
 
 use crate::broad_phase::BroadPhase;
 use crate::budget::{Clock, FrameBudget, FramePlan, FramePolicy, FrozenClock};
-use crate::collider::{Collider, FrameInput};
+use crate::collider::{Collider, FrameInput, NarrowFrame};
 use crate::config::{BudgetSpec, ConfigError, SimConfig, Truth};
 use crate::fixation::Fixation;
 use crate::narrow_phase::{NarrowPhase, PairState};
@@ -95,6 +95,18 @@ impl Simulation {
                 sim.renumber();
             }
         });
+        Ok(sim)
+    }
+
+    /// A simulation of `config` whose narrow phase runs `scheduler` instead of the one `config`
+    /// names (for schedulers defined outside the engine's list, as the tests' toy one).
+    #[cfg(test)]
+    pub(crate) fn with_scheduler(
+        config: SimConfig,
+        scheduler: Box<dyn crate::schedule::Scheduler>,
+    ) -> Result<Self, ConfigError> {
+        let mut sim = Self::new(config)?;
+        sim.collider = Collider::with_scheduler(&sim.config, &sim.tree, &sim.viewer, scheduler)?;
         Ok(sim)
     }
 
@@ -441,7 +453,7 @@ impl Simulation {
     }
 
     /// Stage: prioritise and run the narrow phase under what is left of the budget (the
-    /// collider's passes, see [`Collider::collide_foveal_first`]). Pairs are listed region by
+    /// collider's passes, see [`Collider::collide_frame`]). Pairs are listed region by
     /// region in the searched order, so only the first regions' pairs can be foveal.
     fn narrow_phase(&mut self, frame: &mut Frame<'_>) -> Lap {
         // The broad phase's stage ended at the last reading.
@@ -455,15 +467,14 @@ impl Simulation {
             let foveal = self.policy.shedder.foveal_regions().min(frame.searched);
             self.broad.region_pairs_before(foveal)
         });
-        self.collider.collide_foveal_first(
-            &input,
-            frame.fixation,
-            frame.narrow_budget,
-            frame.clock,
-            &mut frame.report,
-            &mut frame.profile,
-            frame.foveal_prefix,
-        );
+        let narrow = NarrowFrame {
+            fixation: frame.fixation,
+            budget: frame.narrow_budget,
+            clock: frame.clock,
+            foveal_prefix: frame.foveal_prefix,
+        };
+        self.collider
+            .collide_frame(&input, &narrow, &mut frame.report, &mut frame.profile);
         Lap::Timed
     }
 
