@@ -315,8 +315,8 @@ impl Collider {
     /// their order, under the frame's budget. The meter runs from the call: the caller decides
     /// whether earlier phases of the frame spend the same budget.
     ///
-    /// 1. An exact frame resolves every pair and nothing else ([`Self::exact_pass`]).
-    /// 2. The fovea pass ([`Self::fovea_pass`]): with a foveal prefix (a whole-frame budget's
+    /// 1. An exact frame resolves every pair and nothing else (`exact_pass`).
+    /// 2. The fovea pass (`fovea_pass`): with a foveal prefix (a whole-frame budget's
     ///    regions, see [`crate::budget::shedding`]), or over every candidate with
     ///    [`SimConfig::fovea_first`]. With regions, round-robin then spends the rest: at that
     ///    scale the region order is the gaze ordering.
@@ -325,7 +325,7 @@ impl Collider {
     /// 4. The fovea through the gaze rings ([`Passes::rings_fovea`]), if the frame can pay for
     ///    placing them.
     /// 5. The ordered run (prioritise, then the scheduler) if the frame can pay for the ordering;
-    ///    otherwise the fallback: the root pass, the rings or round-robin ([`Self::shed_run`]).
+    ///    otherwise the fallback: the root pass, the rings or round-robin (`shed_run`).
     pub fn collide_frame(
         &mut self,
         input: &FrameInput<'_>,

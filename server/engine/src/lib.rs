@@ -17,9 +17,13 @@
 //! - [`broad_phase`]: sweep and prune with temporal coherence at the paper's N, a uniform grid
 //!   beyond; chosen by the scene.
 //! - [`narrow_phase`]: per-pair traversal state, one level of one tree per step.
-//! - [`budget`]: the budget policy: wall-clock and sphere-test budgets, the [`Clock`] trait, the
+//! - [`clock`]: the [`Clock`] through which alone time enters the engine.
+//! - [`budget`]: the budget policy: wall-clock and sphere-test budgets, the
 //!   narrow phase's meter, each frame's plan, the guard band, shedding and the cost gates.
-//! - [`schedule`]: round-robin, sequential, sorted, priority-queue and expected-gain schedulers.
+//! - [`schedule`]: round-robin, sequential, sorted, priority-queue, expected-gain and priced
+//!   schedulers, each declaring the passes it wants of a frame.
+//! - [`calibrate`]: start-up calibration of the priced scheduler's prices on exact runs of whole
+//!   simulations (above the schedulers, whose table it fills).
 //! - [`perception`], [`fixation`]: camera, display, visual angle, F1/F2/F3.
 //! - [`falloff`]: the models' eccentricity fall-off tabulated for per-pair lookup without libm.
 //! - [`response`]: velocity exchange.
@@ -47,7 +51,9 @@
 
 pub mod broad_phase;
 pub mod budget;
+pub mod calibrate;
 pub mod clairvoyant;
+pub mod clock;
 pub mod collider;
 pub mod config;
 pub mod export;
@@ -72,8 +78,11 @@ pub mod validate;
 pub mod warm;
 pub mod world;
 
-pub use budget::{Clock, FrameBudget, FrozenClock};
-pub use config::{BudgetSpec, ConfigError, SceneConfig, SchedulerKind, SimConfig, Truth};
+pub use budget::FrameBudget;
+pub use clock::{Clock, FrozenClock};
+pub use config::{
+    BudgetSpec, ConfigError, PricedOptions, SceneConfig, SchedulerKind, SimConfig, Truth,
+};
 pub use fixation::Fixation;
 pub use perception::{
     CameraConfig, Display, EccentricityUnit, PerceptualFunction, PerceptualModel,

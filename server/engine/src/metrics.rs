@@ -14,7 +14,7 @@
 //! so the result is the same for every thread count; a frame of at most one run sums in plain
 //! pair order.
 
-use crate::budget::Clock;
+use crate::clock::Clock;
 use crate::fixation::FrameView;
 use crate::math::Vec3;
 use crate::narrow_phase::{MARK_IN, MARK_OUT, NarrowPhase, PairState, PairStatus};

@@ -18,14 +18,14 @@ mod round_robin;
 mod sequential;
 
 pub use expected_gain::ExpectedGain;
-pub use priced::{Priced, PricedOptions};
+pub use priced::Priced;
 pub use priority::{Needs, Priorities, Prioritiser};
 pub use priority_queue::PriorityQueue;
 pub use round_robin::RoundRobin;
 pub use sequential::Sequential;
 
 use crate::budget::Meter;
-use crate::config::SchedulerKind;
+use crate::config::{PricedOptions, SchedulerKind};
 use crate::fixation::FrameView;
 use crate::narrow_phase::{NarrowPhase, StepOutcome};
 use crate::sphere_tree::SphereTree;
