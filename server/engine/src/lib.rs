@@ -16,7 +16,8 @@
 //! - [`world`]: body state and integration (walls reflect).
 //! - [`broad_phase`]: sweep and prune with temporal coherence at the paper's N, a uniform grid
 //!   beyond; chosen by the scene.
-//! - [`narrow_phase`]: per-pair traversal state, one level of one tree per step.
+//! - [`narrow_phase`]: per-pair traversal state, one level of one tree per step (pair state,
+//!   traversal, kernels, witnesses and exact separation, a file each).
 //! - [`clock`]: the [`Clock`] through which alone time enters the engine.
 //! - [`budget`]: the budget policy: wall-clock and sphere-test budgets, the
 //!   narrow phase's meter, each frame's plan, the guard band, shedding and the cost gates.
