@@ -1,7 +1,7 @@
 //! The narrow phase's budget (paper section 2: "the application indicates that it wishes to
 //! interrupt collision processing").
 //!
-//! Time enters the engine only through a [`Clock`] the caller hands in (see [`crate::clock`]); the
+//! Time enters the engine only through a [`Clock`] the caller hands in (see `crate::clock`); the
 //! engine never reads a wall clock itself. Besides the paper's wall-clock budget there is a deterministic budget counted
 //! in sphere tests, so that a run replays bit for bit on any machine.
 
