@@ -73,6 +73,7 @@ pub(crate) mod response;
 pub(crate) mod rng;
 pub mod schedule;
 pub mod shape;
+pub(crate) mod simd;
 pub(crate) mod simulation;
 pub mod soak;
 pub mod sphere_tree;

@@ -2,6 +2,7 @@
 //! scratch arena (a [`Lane`]), and the shape truth's test at the leaves.
 
 use super::*;
+use crate::simd::widest;
 
 /// Mutable view of a run of pairs with its own scratch arena: what one step needs. Lanes over
 /// disjoint runs can step in parallel ([`NarrowPhase::resolve_all`]).
@@ -32,16 +33,11 @@ impl Lane<'_> {
 
     /// Advance pair `i` by one level of one tree, in the widest [`Kernel`] the processor has.
     pub(super) fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
-        #[cfg(target_arch = "x86_64")]
-        if self.wide
-            && let Some(simd) = V3::try_new()
-        {
-            return simd.vectorize(
-                #[inline(always)]
-                || self.step_in(Avx2(simd), i, tree, world),
-            );
-        }
-        self.step_in(Baseline, i, tree, world)
+        widest!(
+            V3 if self.wide,
+            |simd| self.step_in(Avx2(simd), i, tree, world),
+            self.step_in(Baseline, i, tree, world),
+        )
     }
 
     /// Step pair `i` until it is resolved ([`Self::resolve_pair_in`]), in the widest
@@ -52,16 +48,11 @@ impl Lane<'_> {
         tree: &SphereTree,
         world: &World,
     ) -> StepOutcome {
-        #[cfg(target_arch = "x86_64")]
-        if self.wide
-            && let Some(simd) = V3::try_new()
-        {
-            return simd.vectorize(
-                #[inline(always)]
-                || self.resolve_pair_in(Avx2(simd), i, tree, world),
-            );
-        }
-        self.resolve_pair_in(Baseline, i, tree, world)
+        widest!(
+            V3 if self.wide,
+            |simd| self.resolve_pair_in(Avx2(simd), i, tree, world),
+            self.resolve_pair_in(Baseline, i, tree, world),
+        )
     }
 
     /// Resolve every open pair of the lane in one go, each pair's state first written from
@@ -77,16 +68,11 @@ impl Lane<'_> {
         world: &World,
         mut tally: Option<(Tally<'_, T>, &mut T)>,
     ) {
-        #[cfg(target_arch = "x86_64")]
-        if self.wide
-            && let Some(simd) = V3::try_new()
-        {
-            return simd.vectorize(
-                #[inline(always)]
-                || self.resolve_run_in(Avx2(simd), cands, base, hits, tree, world, &mut tally),
-            );
-        }
-        self.resolve_run_in(Baseline, cands, base, hits, tree, world, &mut tally)
+        widest!(
+            V3 if self.wide,
+            |simd| self.resolve_run_in(Avx2(simd), cands, base, hits, tree, world, &mut tally),
+            self.resolve_run_in(Baseline, cands, base, hits, tree, world, &mut tally),
+        )
     }
 
     #[inline(always)]
