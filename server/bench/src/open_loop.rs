@@ -38,9 +38,9 @@ use foveal_engine::{
 use crate::error::BenchError;
 use foveal_gaze::rng::SplitMix64;
 
+use crate::clock::InstantClock;
 use crate::gaze::ScriptedGaze;
 use crate::plots::{Figure, PAPER_P_RATIO, Series, panel};
-use crate::runner::InstantClock;
 use crate::stats::MeanCi;
 
 /// A scheduler under test: a kind and, for the priced one, its ablation switches.
