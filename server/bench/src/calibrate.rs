@@ -9,7 +9,8 @@
 
 use std::fmt::Write as _;
 
-use foveal_engine::schedule::calibration::{Calibration, Observations, ReliabilityRow};
+use foveal_engine::calibrate::{Observations, ReliabilityRow};
+use foveal_engine::schedule::calibration::Calibration;
 use foveal_engine::{SceneConfig, Truth};
 
 use crate::error::BenchError;

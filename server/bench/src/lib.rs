@@ -21,7 +21,7 @@
 //! - [`shard`]: a protocol's cells split over a cluster's workers, their partial results, and
 //!   the merge that writes what one machine would have.
 //! - [`gaze`]: the seeded fixation/saccade script and the recorded-trace reader.
-//! - [`runner`]: the `Instant` clock, one run, the plan, per-frame CSV records.
+//! - [`runner`]: one run, the plan, per-frame CSV records; [`clock`]: the `Instant` clock.
 //! - [`stats`]: per-run mean/sd, mean and 95% CI across seeds.
 //! - [`error`]: [`BenchError`], what can stop a bench command.
 //! - [`report`]: grouping, paired ratios, summary CSVs and markdown tables.
@@ -40,6 +40,7 @@
 //! The two parts write separate files, so they can be run separately into one directory.
 
 pub mod calibrate;
+pub mod clock;
 pub mod contact;
 pub mod error;
 pub mod figures;
@@ -60,10 +61,11 @@ pub mod stress;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
+pub use clock::InstantClock;
 pub use error::BenchError;
 pub use gaze::{GazeError, RecordedGaze, ScriptedGaze};
 pub use protocol::{CurvesConfig, GazeSpec, Mode, Part, RunSpec, StudyConfig};
-pub use runner::{InstantClock, RunSummary};
+pub use runner::RunSummary;
 pub use shard::{CellSpec, Partial, Shard, ShardError};
 
 use shard::{CellKind, ClosedRecord, Num, OpenRecord};

@@ -24,10 +24,10 @@ use std::path::PathBuf;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+use foveal_engine::PricedOptions;
 use foveal_engine::clairvoyant::{self, PairTruth};
 use foveal_engine::collider::{Collider, FrameInput};
 use foveal_engine::fixation::FrameView;
-use foveal_engine::schedule::PricedOptions;
 use foveal_engine::warm;
 use foveal_engine::{
     BudgetSpec, Clock, EccentricityUnit, Fixation, FrameBudget, FrameReport, FrozenClock,
@@ -38,8 +38,9 @@ use foveal_engine::{
 use crate::error::BenchError;
 use foveal_gaze::rng::SplitMix64;
 
+use crate::clock::InstantClock;
 use crate::gaze::ScriptedGaze;
-use crate::runner::InstantClock;
+use crate::plots::{Figure, PAPER_P_RATIO, Series, panel};
 use crate::stats::MeanCi;
 
 /// A scheduler under test: a kind and, for the priced one, its ablation switches.
@@ -778,7 +779,7 @@ pub fn run_frames_parts(
                 continue;
             };
             let fb = FrameBudget::Wall((x * base_ns).round() as u64);
-            for _ in 0..foveal_engine::collider::LEARN_FRAMES {
+            for _ in 0..foveal_engine::budget::LEARN_FRAMES {
                 let mut r = FrameReport::default();
                 let mut prof = PhaseProfile::default();
                 run.collider.warm();
@@ -1331,7 +1332,7 @@ pub fn write_parts(
             std::fs::write(&path, text).map_err(|e| BenchError::io(&path, e))?;
             files.push(path);
         }
-        let figs = crate::figures::open_loop_figures(cfg, &rows);
+        let figs = open_loop_figures(cfg, &rows);
         if !figs.is_empty() {
             let dir = cfg.out.join("figures");
             std::fs::create_dir_all(&dir).map_err(|e| BenchError::io(&dir, e))?;
@@ -1510,6 +1511,160 @@ pub fn halving_markdown(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
         }
     }
     s
+}
+
+/// Open-loop figures (every scheduler on identical frames), one per N and matched-model condition
+/// fed the viewer's gaze: the share of the achievable reduction and true P over round-robin's
+/// (paired by seed, 95% CIs) against the sphere-test budget, and the ratio against the wall-clock
+/// budget with the sphere tests done beside it. The clairvoyant bound is drawn among the ratios;
+/// the screen-centre control of the same model (no eye tracker) is dashed.
+pub fn open_loop_figures(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> Vec<(String, Figure)> {
+    let mut out = Vec::new();
+    let series = |n: u32, cond: &str, label: &str, wall: bool, value: fn(&SummaryRow) -> MeanCi| {
+        let points: Vec<(f64, MeanCi)> = cfg
+            .budgets
+            .iter()
+            .filter_map(|b| match (*b, wall) {
+                (Budget::Tests(x), false) | (Budget::Wall(x), true) => Some((x, b.label())),
+                _ => None,
+            })
+            .filter_map(|(x, label_b)| {
+                rows.iter()
+                    .find(|r| {
+                        r.n == n
+                            && r.condition == cond
+                            && r.budget == label_b
+                            && r.scheduler == label
+                    })
+                    .map(|r| (x, value(r)))
+                    .filter(|(_, v)| v.mean.is_finite())
+            })
+            .collect();
+        points
+    };
+    for &n in &cfg.ns {
+        for cond in cfg
+            .conditions
+            .iter()
+            .filter(|c| c.feed == GazeFeed::Viewer && c.schedule_model == c.measure_model)
+            .filter(|c| !c.suppress_saccades)
+        {
+            let centre = cfg.conditions.iter().find(|c| {
+                c.feed == GazeFeed::Centre
+                    && c.schedule_model == cond.schedule_model
+                    && c.measure_model == cond.measure_model
+            });
+            // The ablations of the priced scheduler are in the tables, not the figure.
+            let shown = |s: &&SchedulerSpec| {
+                s.kind != SchedulerKind::RoundRobin
+                    && (s.kind != SchedulerKind::Priced || s.label == SchedulerKind::Priced.name())
+            };
+            let labels: Vec<&str> = cond
+                .schedulers
+                .iter()
+                .filter(shown)
+                .map(|s| s.label.as_str())
+                .collect();
+            let mut panels = Vec::new();
+            let share_of: fn(&SummaryRow) -> MeanCi = |r| r.share;
+            let ratio_of: fn(&SummaryRow) -> MeanCi = |r| r.ratio_rr;
+            for (title, y_label, wall, share) in [
+                (
+                    "Share of the achievable reduction, sphere-test budgets",
+                    "(P_rr - P_s) / (P_rr - P_clairvoyant), paired by seed",
+                    false,
+                    true,
+                ),
+                (
+                    "True P / round-robin's, sphere-test budgets",
+                    "ratio of mean true P, paired by seed",
+                    false,
+                    false,
+                ),
+                (
+                    "True P / round-robin's, wall-clock budgets",
+                    "ratio of mean true P, paired by seed",
+                    true,
+                    false,
+                ),
+            ] {
+                let value = if share { share_of } else { ratio_of };
+                let mut ss: Vec<Series> = labels
+                    .iter()
+                    .map(|&l| Series {
+                        name: l.into(),
+                        points: series(n, &cond.name, l, wall, value),
+                        dashed: false,
+                    })
+                    .collect();
+                if let Some(c) = centre {
+                    for s in c
+                        .schedulers
+                        .iter()
+                        .filter(|s| s.kind != SchedulerKind::RoundRobin)
+                    {
+                        ss.push(Series {
+                            name: format!("{}, centre-fed", s.label),
+                            points: series(n, &c.name, &s.label, wall, value),
+                            dashed: true,
+                        });
+                    }
+                }
+                if !share {
+                    ss.push(Series {
+                        name: "clairvoyant bound".into(),
+                        points: series(n, &cond.name, "clairvoyant", wall, value),
+                        dashed: false,
+                    });
+                }
+                ss.retain(|s| !s.points.is_empty());
+                if ss.is_empty() {
+                    continue;
+                }
+                let mut p = panel(
+                    format!("{title} (N = {n}, {})", cond.name),
+                    y_label.into(),
+                    ss,
+                );
+                p.x_label = if wall {
+                    "budget (fraction of the exact narrow-phase time)".into()
+                } else {
+                    "budget (fraction of the frame's exact sphere tests)".into()
+                };
+                p.log_x = true;
+                // Shares can be negative and the bound's ratio 0: a linear y.
+                p.log_y = false;
+                p.references = if share {
+                    vec![
+                        (0.8, "0.8 of achievable".into()),
+                        (0.0, "round-robin".into()),
+                    ]
+                } else {
+                    vec![
+                        (PAPER_P_RATIO, "halved (paper)".into()),
+                        (1.0, "round-robin".into()),
+                    ]
+                };
+                panels.push(p);
+            }
+            if panels.is_empty() {
+                continue;
+            }
+            let tag: String = cond
+                .name
+                .chars()
+                .map(|c| {
+                    if c.is_ascii_alphanumeric() || c == '.' {
+                        c
+                    } else {
+                        '_'
+                    }
+                })
+                .collect();
+            out.push((format!("open_loop_n{n}_{tag}"), Figure { panels }));
+        }
+    }
+    out
 }
 
 #[cfg(test)]

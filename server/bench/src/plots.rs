@@ -490,6 +490,22 @@ pub fn render(fig: &Figure, stem: &Path) -> Result<Rendered, BenchError> {
     })
 }
 
+/// The paper's claim for priority scheduling: P "roughly halves" (section 4).
+pub(crate) const PAPER_P_RATIO: f64 = 0.5;
+
+/// A panel over the body count N, log-log, without reference lines.
+pub(crate) fn panel(title: String, y_label: String, series: Vec<Series>) -> Panel {
+    Panel {
+        title,
+        x_label: "bodies N".into(),
+        y_label,
+        log_x: true,
+        log_y: true,
+        series,
+        references: Vec::new(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

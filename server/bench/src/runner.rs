@@ -10,36 +10,14 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
-use foveal_engine::{BudgetSpec, Clock, FrameReport, FrozenClock, SchedulerKind, Simulation};
+use foveal_engine::{BudgetSpec, FrameReport, FrozenClock, SchedulerKind, Simulation};
 use indicatif::{ProgressBar, ProgressStyle};
 
+use crate::clock::InstantClock;
 use crate::error::BenchError;
 use crate::gaze::{Gaze, RecordedGaze, ScriptedGaze};
 use crate::protocol::{GazeSpec, Part, RunSpec, StudyConfig};
 use crate::stats::Accum;
-
-/// A monotonic wall clock for the engine: nanoseconds since the clock was made.
-#[derive(Debug, Clone, Copy)]
-pub struct InstantClock(Instant);
-
-impl InstantClock {
-    /// A clock starting now.
-    pub fn new() -> Self {
-        Self(Instant::now())
-    }
-}
-
-impl Default for InstantClock {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
-impl Clock for InstantClock {
-    fn now_ns(&self) -> u64 {
-        self.0.elapsed().as_nanos() as u64
-    }
-}
 
 /// Header of the per-frame CSV.
 pub const FRAME_HEADER: &str = "frame,sim_time_s,fix_x,fix_y,fix_age_s,t_ms,broad_ms,narrow_ms,response_ms,\

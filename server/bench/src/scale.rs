@@ -27,7 +27,7 @@ use foveal_engine::{
 };
 use serde::{Deserialize, Serialize};
 
-use crate::runner::InstantClock;
+use crate::clock::InstantClock;
 
 /// Body counts measured by default.
 pub const DEFAULT_NS: [u32; 3] = [10_000, 100_000, 1_000_000];

@@ -8,7 +8,8 @@
 //! collider keeps only what a scheduler legitimately carries between frames (the narrow phase's
 //! witnesses and its buffers).
 
-use crate::budget::{Clock, FrameBudget, Meter};
+use crate::budget::gate::RINGS_SHARE;
+use crate::budget::{Clock, CostGate, FrameBudget, Meter};
 use crate::config::{SimConfig, Truth};
 use crate::fixation::{Fixation, FrameView};
 use crate::metrics::{self, Fovea};
@@ -16,7 +17,7 @@ use crate::narrow_phase::{NarrowPhase, PairState, PairStatus, separation, shape_
 use crate::perception::Viewer;
 use crate::report::{AuditReport, FOVEAL_DEG, FrameReport, PhaseProfile};
 use crate::schedule::calibration::Calibration;
-use crate::schedule::{self, Priorities, Prioritiser, Scheduler, Work};
+use crate::schedule::{self, Passes, Priorities, Prioritiser, Scheduler, Work};
 use crate::sphere_tree::SphereTree;
 use crate::validate::ConfigError;
 use crate::world::World;
@@ -37,11 +38,64 @@ pub struct FrameInput<'a> {
     pub viewer: &'a Viewer,
 }
 
+/// One frame's narrow phase as [`Collider::collide_frame`] is asked to run it.
+#[derive(Clone, Copy)]
+pub struct NarrowFrame<'c> {
+    /// Where the viewer looks, if known and usable.
+    pub fixation: Option<Fixation>,
+    /// The narrow phase's budget.
+    pub budget: FrameBudget,
+    /// Times the passes and enforces a wall-clock budget.
+    pub clock: &'c dyn Clock,
+    /// A whole-frame budget's frame (see [`crate::budget::shedding`]) whose first this many
+    /// candidates are the pairs of the regions that may hold foveal pairs: the pairs among them
+    /// whose centre is within [`FOVEAL_DEG`] of the fixation (widened by its uncertainty) are
+    /// resolved to completion first, and round-robin then spends what is left on the rest. At
+    /// that scale the region order is the gaze ordering, and it costs one fovea test per pair of
+    /// those regions instead of a prioritisation of every pair.
+    pub foveal_prefix: Option<usize>,
+}
+
+impl std::fmt::Debug for NarrowFrame<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("NarrowFrame")
+            .field("fixation", &self.fixation)
+            .field("budget", &self.budget)
+            .field("foveal_prefix", &self.foveal_prefix)
+            .finish_non_exhaustive()
+    }
+}
+
+/// A budgeted frame's passes in flight: what they share.
+struct Run<'c> {
+    clock: &'c dyn Clock,
+    budget: FrameBudget,
+    meter: Meter<'c>,
+    /// When the frame's meter started.
+    t_meter: u64,
+    /// Candidate pairs.
+    n: usize,
+    /// The fixation in pixels, and its uncertainty (degrees; 0 without one).
+    fixation_px: Option<[f64; 2]>,
+    uncertainty_deg: f64,
+    /// Time the sphere-test passes before the ordering took (ns): narrow-phase time.
+    pass_ns: u64,
+}
+
+/// Whether this frame asked for the gaze rings' fovea pass, and whether it placed them.
+#[derive(Debug, Clone, Copy, Default)]
+struct RingsState {
+    asked: bool,
+    placed: bool,
+}
+
 /// Prioritisation, scheduling, interruption, metrics and audit for one configuration.
 #[derive(Debug)]
 pub struct Collider {
     config: SimConfig,
     scheduler: Box<dyn Scheduler>,
+    /// What the scheduler asks of a frame beyond its own run.
+    passes: Passes,
     prioritiser: Prioritiser,
     calibration: Calibration,
     narrow: NarrowPhase,
@@ -66,101 +120,8 @@ pub struct Collider {
     foveal_marked: bool,
     /// An exact frame's counts, summed by its narrow phase as it resolved the pairs, with the
     /// fixation (in pixels) whose fovea they counted: the metrics use them instead of counting
-    /// every pair again (see [`Self::collide_exact`]).
+    /// every pair again (see [`Self::exact_pass`]).
     counted: Option<(Option<[f64; 2]>, metrics::Counts)>,
-}
-
-/// A wall-clock frame orders its work only if the expected cost of ordering is at most this
-/// share of the time left: above it, gaze-blind round-robin does more good with the same time.
-///
-/// The line depends on what the ordering buys, so it is the scheduler's. Priced: measured open
-/// loop at N = 500 (1,231 pairs), ordering costs about 22 us (p10 19, p90 32), half of a frame
-/// whose budget is a third of the exact narrow phase (44-52 us). With the line at a half, that
-/// frame ordered or not by the chance of its own timing, and priced reached 0.88-0.94x
-/// round-robin's true P there; at three quarters it orders and reaches 0.79x (C = 5) and 0.43x
-/// (C = 1) with 0.56x the sphere tests. At a tenth of the exact narrow phase (14 us) the ordering
-/// costs more than the whole budget either way and is shed. With the ordering at about 13 us
-/// (body pass and pricing, since the pricing pass was made cheaper) a third (28-30 us) orders
-/// every frame; shedding there instead left 0.91x (C = 5) and 0.85x (C = 1) round-robin's true P
-/// against ordering's 0.89-0.95x and 0.48-0.65x (docs/BENCHMARKS.md), so the line stays.
-const PRICED_ORDERING_SHARE: f64 = 0.75;
-
-/// The same line for the paper's priority queue and expected-gain, whose ordering buys less per
-/// microsecond: at a half (the line drawn for priced before) they already do worse than
-/// round-robin in some wall-clock frames, so it is not raised for them.
-const ORDERING_SHARE: f64 = 0.5;
-
-/// The share of the time left that `kind`'s ordering may cost.
-fn ordering_share(kind: crate::config::SchedulerKind) -> f64 {
-    match kind {
-        crate::config::SchedulerKind::Priced => PRICED_ORDERING_SHARE,
-        _ => ORDERING_SHARE,
-    }
-}
-
-/// A shed frame places the gaze rings (see [`crate::schedule::rings`]) only if that is expected
-/// to cost at most this share of the time left. Measured open loop (5 seeds): placing takes
-/// about 3.6 us at N = 500 and 29 us at N = 10,000 (medians); spending even three quarters of a
-/// frame on it pays, because the few tests left go to the pairs a viewer sees (at a tenth of
-/// the exact narrow phase, N = 500, 12 us: priced's true P 0.69x (C = 5) and 0.48x (C = 1)
-/// round-robin's), but at a thirtieth (4 us) no test would be left: placing anyway left
-/// 1.02-1.03x round-robin's P. At a half, the tenth's frames placed in only 58% of frames. (These
-/// figures predate the root pass and the fovea resolved whole; the gate was kept through both,
-/// and docs/BENCHMARKS.md has the current ones.)
-const RINGS_SHARE: f64 = 0.75;
-
-/// The first wall-clock frames order whatever the estimate says, so that the cost is learnt from
-/// several frames, not from the first one alone (cold caches, first allocations).
-pub const LEARN_FRAMES: u32 = 3;
-
-/// After this many wall-clock frames in a row shed (4 s at 60 Hz), the next one orders and
-/// measures the cost again: often enough to notice a faster machine or a smaller frame, rarely
-/// enough that the probes' own cost (a frame that may spend its budget on ordering) stays near 1%.
-const PROBE_EVERY: u32 = 240;
-
-/// What a frame's optional work costs, learnt from the frames that did it, and whether a frame
-/// can pay for it: the ordering, and the gaze rings of the frames that shed it. One slow frame (a
-/// cold cache, the first frame's allocations, a preemption) must not shed the work for good, so
-/// the first [`LEARN_FRAMES`] do it whatever the estimate says and every [`PROBE_EVERY`]-th
-/// frame in a row that would not does it anyway and measures again.
-#[derive(Debug, Clone, Copy, Default)]
-struct CostGate {
-    /// The learnt cost: a moving average, quick to fall and slow to rise (slow outliers are
-    /// common, fast ones are not).
-    cost: Option<f64>,
-    /// Frames that did the work and measured it.
-    measured: u32,
-    /// Frames in a row that could not pay for it.
-    streak: u32,
-}
-
-impl CostGate {
-    /// Whether work of `scale` times the learnt cost fits in `allowance` (None: no limit),
-    /// which is asked for only when it matters: it reads the clock.
-    fn allows(&self, scale: f64, allowance: impl FnOnce() -> Option<f64>) -> bool {
-        match self.cost {
-            Some(_) if self.measured < LEARN_FRAMES => true,
-            Some(cost) => {
-                allowance().is_none_or(|a| cost * scale <= a) || self.streak >= PROBE_EVERY
-            }
-            None => true,
-        }
-    }
-
-    /// Whether this frame did the work (a frame that could not pay lengthens the streak).
-    fn record(&mut self, done: bool) {
-        self.streak = if done { 0 } else { self.streak + 1 };
-    }
-
-    /// Learn from a frame that did the work at `cost`.
-    fn learn(&mut self, cost: f64) {
-        self.measured = self.measured.saturating_add(1);
-        self.cost = Some(match self.cost {
-            Some(old) if cost < old => cost,
-            Some(old) => 0.8 * old + 0.2 * cost,
-            None => cost,
-        });
-    }
 }
 
 /// Settle every root-separated pair of the frame in one pass, as far as `meter` allows (see
@@ -180,17 +141,36 @@ impl Collider {
         viewer: &Viewer,
     ) -> Result<Self, ConfigError> {
         config.validate()?;
+        Self::with_scheduler(
+            config,
+            tree,
+            viewer,
+            schedule::for_kind(config.scheduler, config.priced),
+        )
+    }
+
+    /// A collider for `config` that runs `scheduler` instead of the one `config` names (the
+    /// scheduler's own declaration, [`Scheduler::passes`], says what the frame does for it).
+    pub(crate) fn with_scheduler(
+        config: &SimConfig,
+        tree: &SphereTree,
+        viewer: &Viewer,
+        scheduler: Box<dyn Scheduler>,
+    ) -> Result<Self, ConfigError> {
+        config.validate()?;
         let r = tree.root_radius();
+        let passes = scheduler.passes();
         Ok(Self {
-            scheduler: schedule::for_kind(config.scheduler, config.priced),
+            scheduler,
+            passes,
             prioritiser: Prioritiser::new(
                 viewer,
                 &config.schedule_model,
                 config.eccentricity_threshold_deg,
                 r,
-                schedule::needs(config.scheduler),
+                passes.needs,
             ),
-            calibration: if config.scheduler == crate::config::SchedulerKind::Priced {
+            calibration: if passes.calibrated {
                 Calibration::for_tree(tree, &config.scene)?
             } else {
                 Calibration::uninformed(tree.depth() as u8)
@@ -198,10 +178,7 @@ impl Collider {
             narrow: NarrowPhase::default(),
             priorities: Priorities::default(),
             audit_stack: Vec::new(),
-            fallback: schedule::for_kind(
-                crate::config::SchedulerKind::RoundRobin,
-                schedule::PricedOptions::default(),
-            ),
+            fallback: schedule::fallback(),
             rings: Default::default(),
             rings_cost: CostGate::default(),
             ordering_cost: CostGate::default(),
@@ -214,20 +191,13 @@ impl Collider {
     }
 
     /// Whether a frame under `budget` settles the fovea first over every candidate (see
-    /// [`SimConfig::fovea_first`]): wall-clock budgets of the priced scheduler when it uses gaze.
+    /// [`SimConfig::fovea_first`]): wall-clock budgets of a scheduler that asks for it
+    /// ([`Passes::fovea_first`]) and orders by gaze.
     fn fovea_first(&self, budget: FrameBudget) -> bool {
         self.config.fovea_first
             && matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_))
-            && self.config.scheduler == crate::config::SchedulerKind::Priced
-            && self.uses_gaze()
-    }
-
-    /// Whether the scheduler orders by gaze: the paper's priority schedulers and the priced
-    /// scheduler, except its gaze-blind ablation ([`crate::schedule::PricedOptions::gaze`]).
-    fn uses_gaze(&self) -> bool {
-        self.config.scheduler.needs_priority()
-            && (self.config.scheduler != crate::config::SchedulerKind::Priced
-                || self.config.priced.gaze)
+            && self.passes.fovea_first
+            && self.passes.gaze
     }
 
     /// Pair states of the last frame.
@@ -270,7 +240,7 @@ impl Collider {
         &self.priorities
     }
 
-    /// The last foveal pass of [`Self::collide_foveal_first`]: the pairs it settled and its time
+    /// The last foveal pass of [`Self::collide_frame`]: the pairs it settled and its time
     /// (ns).
     pub fn foveal_pass(&self) -> Option<(u32, u64)> {
         self.foveal_pass
@@ -319,21 +289,10 @@ impl Collider {
         self.narrow.warm();
     }
 
-    /// Whether the scheduler prioritises, given whether there is a fixation.
-    fn prioritises(&self, has_fixation: bool) -> bool {
-        use crate::config::SchedulerKind;
-        match self.config.scheduler {
-            // Needs distances and scales even without a fixation.
-            SchedulerKind::Priced => true,
-            k => has_fixation && k.needs_priority(),
-        }
-    }
-
     /// Prioritise and run the narrow phase on `input` under `budget`, deem what is left open, and
-    /// remember this frame's witnesses. Fills the counts of `r` and the prioritise and narrow
-    /// timings of `profile`. The meter runs from `meter_start` on: the caller decides whether
-    /// earlier phases of the frame spend the same budget.
-    #[allow(clippy::too_many_arguments)]
+    /// remember this frame's witnesses: the open-loop entry ([`Self::collide_frame`] with no
+    /// foveal prefix). Fills the counts of `r` and the prioritise and narrow timings of
+    /// `profile`.
     pub fn collide(
         &mut self,
         input: &FrameInput<'_>,
@@ -343,34 +302,45 @@ impl Collider {
         r: &mut FrameReport,
         profile: &mut PhaseProfile,
     ) {
-        self.collide_foveal_first(input, fixation, budget, clock, r, profile, None);
+        let frame = NarrowFrame {
+            fixation,
+            budget,
+            clock,
+            foveal_prefix: None,
+        };
+        self.collide_frame(input, &frame, r, profile);
     }
 
-    /// [`Self::collide`] for a whole-frame budget's frame (see [`crate::shedding`]) whose first
-    /// `foveal_prefix` candidates are the pairs of the regions that may hold foveal pairs: with
-    /// a fixation, the pairs among them whose centre is within [`FOVEAL_DEG`] of it (widened by
-    /// its uncertainty) are resolved to completion first, one after another, and round-robin
-    /// then spends what is left of the budget on the rest. At this scale the region order is
-    /// the gaze ordering, and it costs one fovea test per pair of those regions instead of a
-    /// prioritisation of every pair. With `None`, exactly [`Self::collide`].
-    #[allow(clippy::too_many_arguments)]
-    pub fn collide_foveal_first(
+    /// One frame's narrow phase: the passes its scheduler declares ([`Scheduler::passes`]), in
+    /// their order, under the frame's budget. The meter runs from the call: the caller decides
+    /// whether earlier phases of the frame spend the same budget.
+    ///
+    /// 1. An exact frame resolves every pair and nothing else (`exact_pass`).
+    /// 2. The fovea pass (`fovea_pass`): with a foveal prefix (a whole-frame budget's
+    ///    regions, see [`crate::budget::shedding`]), or over every candidate with
+    ///    [`SimConfig::fovea_first`]. With regions, round-robin then spends the rest: at that
+    ///    scale the region order is the gaze ordering.
+    /// 3. The root pass, in a wall-clock frame of a scheduler whose order takes those tests first
+    ///    ([`Passes::roots_first`]).
+    /// 4. The fovea through the gaze rings ([`Passes::rings_fovea`]), if the frame can pay for
+    ///    placing them.
+    /// 5. The ordered run (prioritise, then the scheduler) if the frame can pay for the ordering;
+    ///    otherwise the fallback: the root pass, the rings or round-robin (`shed_run`).
+    pub fn collide_frame(
         &mut self,
         input: &FrameInput<'_>,
-        fixation: Option<Fixation>,
-        budget: FrameBudget,
-        clock: &dyn Clock,
+        frame: &NarrowFrame<'_>,
         r: &mut FrameReport,
         profile: &mut PhaseProfile,
-        foveal_prefix: Option<usize>,
     ) {
+        let (fixation, budget, clock) = (frame.fixation, frame.budget, frame.clock);
         let t0 = clock.now_ns();
         self.foveal_pass = None;
         self.foveal_known = None;
         self.foveal_marked = false;
         self.counted = None;
         if budget == FrameBudget::Unlimited {
-            self.collide_exact(input, fixation, clock, r, profile, t0);
+            self.exact_pass(input, fixation, clock, r, profile, t0);
             return;
         }
         self.narrow.reset(input.candidates);
@@ -379,56 +349,29 @@ impl Collider {
             let f = f.clamped();
             input.viewer.to_pixels(f.x, f.y)
         });
-        let mut meter = Meter::new(budget, clock);
+        let meter = Meter::new(budget, clock);
         // A wall-clock meter starts after the reset, which every scheduler pays: the ordering's
         // cost is measured from its start (a frame deadline set before the reset counts it).
         let t_meter = meter.started_ns().unwrap_or(t0);
-        let n = self.narrow.pairs.len();
+        let mut run = Run {
+            clock,
+            budget,
+            meter,
+            t_meter,
+            n: self.narrow.pairs.len(),
+            fixation_px,
+            uncertainty_deg: fixation.map_or(0.0, |f| f.clamped().uncertainty_deg),
+            pass_ns: 0,
+        };
+        let passes = self.passes;
         // With `fovea_first`, frames without regions settle the fovea first too, over every
         // candidate (see `SimConfig::fovea_first`); then the ordering below spends the rest.
-        let whole_fovea = foveal_prefix.is_none() && self.fovea_first(budget);
-        let mut pass_ns = 0;
-        if let (Some(prefix), Some(px)) = (foveal_prefix.or(whole_fovea.then_some(n)), fixation_px)
-        {
-            let radius = FOVEAL_DEG + fixation.map_or(0.0, |f| f.clamped().uncertainty_deg);
-            let fovea = Fovea::new(input.viewer, px, radius.min(89.0));
-            let pos = &input.world.position;
-            let pass_start = clock.now_ns();
-            // Over every candidate, a pair is tested only if its first body is near enough to
-            // the fovea for the pair's centre to be in it (one pass over the bodies, as the
-            // metrics' count does): the exact test is a projection.
-            let near = whole_fovea.then(|| {
-                let reach = metrics::centre_reach(input.tree);
-                metrics::near_bodies(&fovea, pos, reach, self.config.threads as usize)
-            });
-            // A foveal pair is settled whole, so it is resolved in one go (the same tests as
-            // stepping it level by level, without storing and reloading its list at every
-            // level), on every thread. The meter is read between pairs, so the pass overshoots
-            // its deadline by a few pairs' descents at most (microseconds).
-            let select = |p: &PairState| {
-                near.as_ref().is_none_or(|near| near[p.a as usize])
-                    && fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5)
-            };
-            let mut cut = false;
-            let settled = self.narrow.resolve_selected(
-                input.tree,
-                input.world,
-                prefix.min(n),
-                self.config.threads as usize,
-                &select,
-                &mut |tests| {
-                    let go = !meter.exhausted(tests);
-                    cut |= !go;
-                    go
-                },
-            );
-            pass_ns = clock.now_ns().saturating_sub(pass_start);
-            self.foveal_pass = Some((settled, pass_ns));
-            // Not cut: every selected pair was settled. The metrics count the pairs of the same
-            // prefix within FOVEAL_DEG of the same point, the same test when the radius is not
-            // widened by uncertainty.
-            self.foveal_known = (!cut && radius == FOVEAL_DEG).then_some(settled);
-            self.foveal_marked = radius == FOVEAL_DEG;
+        let whole_fovea = frame.foveal_prefix.is_none() && self.fovea_first(budget);
+        if let (Some(prefix), Some(px)) = (
+            frame.foveal_prefix.or(whole_fovea.then_some(run.n)),
+            fixation_px,
+        ) {
+            self.fovea_pass(input, &mut run, prefix, px, whole_fovea);
             // At large N round-robin spends the rest (the regions are the gaze order); over every
             // candidate, the ordering below does.
             if !whole_fovea {
@@ -440,117 +383,189 @@ impl Collider {
                     priorities: &self.priorities,
                     calibration: &self.calibration,
                 };
-                self.fallback.run(&mut self.narrow, &work, &mut meter);
+                self.fallback.run(&mut self.narrow, &work, &mut run.meter);
                 self.scheduler.forget();
                 let deemed = self.narrow.close_frame(input.world.len());
                 profile.prioritise_ns = 0;
                 profile.narrow_ns = clock.now_ns() - t0;
-                r.candidate_pairs = n as u32;
-                r.deemed = deemed;
-                r.sphere_tests = self.narrow.tests;
-                r.budget_exhausted = meter.was_exhausted();
+                self.report_counts(&run, deemed, r);
                 return;
             }
         }
-        // A wall-clock frame of round-robin or the priced scheduler settles every root-separated
-        // pair first, in one pass (see `NarrowPhase::settle_separate_roots`), at about 2 ns a
-        // pair against 10-20 ns a step. Round-robin's first round is these same tests in the
-        // same order (less the pairs with a witness, stepped in the round); the priced order
-        // puts them first anyway (each the most false-positive error removed for one test). The
-        // paper's priority schedulers rank every pair's first test by priority, and sequential
-        // resolution takes each pair whole in turn: both orders this would change, so they take
-        // the pass only in frames that shed their order for round-robin (below).
-        let roots_first = meter.counts_time()
-            && matches!(
-                self.config.scheduler,
-                crate::config::SchedulerKind::RoundRobin | crate::config::SchedulerKind::Priced
-            );
+        let roots_first = run.meter.counts_time() && passes.roots_first;
         if roots_first {
-            let roots_start = clock.now_ns();
-            settle_roots(&mut self.narrow, input, &mut meter);
-            pass_ns += clock.now_ns().saturating_sub(roots_start);
+            self.root_pass(input, &mut run);
         }
-        let uncertainty_deg = fixation.map_or(0.0, |f| f.clamped().uncertainty_deg);
         // The gaze rings (see `schedule::rings`), for schedulers that use gaze (not the priced
         // scheduler's gaze-blind ablation), where the broad phase has columns to find the pairs
         // by and the frame's time can pay for placing them (learnt like the ordering's cost,
         // see `CostGate`).
         let rings_at = match (input.columns, fixation_px) {
-            (Some(c), Some(px)) if self.uses_gaze() && meter.counts_time() && c.covers(n) => {
+            (Some(c), Some(px)) if passes.gaze && run.meter.counts_time() && c.covers(run.n) => {
                 Some((c, px))
             }
             _ => None,
         };
-        let rings_affordable = |meter: &Meter<'_>, gate: &mut CostGate| {
-            let yes = gate.allows(1.0, || {
-                meter.wall_left_ns().map(|left| RINGS_SHARE * left as f64)
-            });
-            gate.record(yes);
-            yes
-        };
-        // A wall-clock frame of the priced scheduler settles the pairs within the fovea first,
-        // whole and nearest the fixation first, where the rings can find them: the priced order
-        // alone leaves the foveal pairs likely to collide for last (deeming a true collision
-        // removes no false-positive error), and what the viewer looks at is then not exact.
-        // At 10,000 bodies and a 4 ms frame budget this took the frames with every foveal pair
-        // settled from 1-2% to 100% (docs/BENCHMARKS.md). `fovea_first` has settled them already.
-        let (mut rings_asked, mut rings_placed) = (false, false);
-        if let Some((columns, px)) = rings_at.filter(|_| {
-            roots_first
-                && !whole_fovea
-                && self.config.scheduler == crate::config::SchedulerKind::Priced
-        }) {
-            rings_asked = true;
-            if rings_affordable(&meter, &mut self.rings_cost) {
-                let fovea_start = clock.now_ns();
-                rings_placed = self
-                    .rings
-                    .fovea(
-                        &mut self.narrow,
-                        input.tree,
-                        input.world,
-                        columns,
-                        input.viewer,
-                        px,
-                        uncertainty_deg,
-                        &mut meter,
-                    )
-                    .is_some();
-                if rings_placed {
-                    self.rings_cost.learn(self.rings.setup_ns() as f64);
-                }
-                r.gaze_rings = rings_placed;
-                pass_ns += clock.now_ns().saturating_sub(fovea_start);
-            }
+        // `fovea_first` has settled the fovea already.
+        let mut rings = RingsState::default();
+        if let Some((columns, px)) =
+            rings_at.filter(|_| roots_first && !whole_fovea && passes.rings_fovea)
+        {
+            rings.asked = true;
+            self.rings_fovea_pass(input, &mut run, columns, px, &mut rings, r);
         }
         // Under a wall-clock budget too small to pay for ordering the pairs, ordering them would
         // leave less time for the tests than it is worth: shed it, run round-robin, and say so.
         // The cost is learnt from frames that ordered (see `CostGate`).
-        let share = ordering_share(self.config.scheduler);
-        let affordable = self.ordering_cost.allows(n as f64, || {
-            meter.wall_left_ns().map(|left| share * left as f64)
-        });
-        self.ordering_cost.record(affordable);
-        let prioritised = affordable && self.prioritises(fixation_px.is_some());
+        let affordable = self
+            .ordering_cost
+            .admits(run.n as f64, passes.ordering_share, &run.meter);
+        let prioritised = affordable && passes.prioritises(fixation_px.is_some());
         r.ordering_shed = !affordable;
         if prioritised {
             self.prioritiser.prioritise(
                 &self.narrow.pairs,
                 input.world,
                 input.viewer,
-                fixation_px.map(|px| (px, uncertainty_deg)),
+                fixation_px.map(|px| (px, run.uncertainty_deg)),
                 &mut self.priorities,
-                &mut meter,
+                &mut run.meter,
             );
         } else {
             self.priorities.clear();
         }
         let t1 = clock.now_ns();
-        let view = fixation_px.map(|px| FrameView {
+        if affordable {
+            self.ordered_run(input, &mut run, prioritised, t1);
+        } else {
+            self.shed_run(input, &mut run, roots_first, rings_at, rings, r);
+        }
+        let deemed = self.narrow.close_frame(input.world.len());
+        let t2 = clock.now_ns();
+        // The passes are sphere tests: narrow-phase time.
+        profile.prioritise_ns = (t1 - t0).saturating_sub(run.pass_ns);
+        profile.narrow_ns = t2 - t1 + run.pass_ns.min(t1 - t0);
+        self.report_counts(&run, deemed, r);
+    }
+
+    /// The counts of a budgeted frame's narrow phase, into `r`.
+    fn report_counts(&self, run: &Run<'_>, deemed: u32, r: &mut FrameReport) {
+        r.candidate_pairs = self.narrow.pairs.len() as u32;
+        r.deemed = deemed;
+        r.sphere_tests = self.narrow.tests;
+        r.budget_exhausted = run.meter.was_exhausted();
+    }
+
+    /// Pass: settle the first `prefix` candidates whose centre is within [`FOVEAL_DEG`] of the
+    /// fixation at `px` (widened by its uncertainty), each to completion, nearest first, as far
+    /// as the meter allows. Over every candidate (`whole_fovea`) a pair is tested only if its
+    /// first body is near enough to the fovea for the pair's centre to be in it.
+    fn fovea_pass(
+        &mut self,
+        input: &FrameInput<'_>,
+        run: &mut Run<'_>,
+        prefix: usize,
+        px: [f64; 2],
+        whole_fovea: bool,
+    ) {
+        let radius = FOVEAL_DEG + run.uncertainty_deg;
+        let fovea = Fovea::new(input.viewer, px, radius.min(89.0));
+        let pos = &input.world.position;
+        let pass_start = run.clock.now_ns();
+        // One pass over the bodies, as the metrics' count does: the exact test is a projection.
+        let near = whole_fovea.then(|| {
+            let reach = metrics::centre_reach(input.tree);
+            metrics::near_bodies(&fovea, pos, reach, self.config.threads as usize)
+        });
+        // A foveal pair is settled whole, so it is resolved in one go (the same tests as
+        // stepping it level by level, without storing and reloading its list at every
+        // level), on every thread. The meter is read between pairs, so the pass overshoots
+        // its deadline by a few pairs' descents at most (microseconds).
+        let select = |p: &PairState| {
+            near.as_ref().is_none_or(|near| near[p.a as usize])
+                && fovea.contains_point((pos[p.a as usize] + pos[p.b as usize]) * 0.5)
+        };
+        let mut cut = false;
+        let meter = &mut run.meter;
+        let settled = self.narrow.resolve_selected(
+            input.tree,
+            input.world,
+            prefix.min(run.n),
+            self.config.threads as usize,
+            &select,
+            &mut |tests| {
+                let go = !meter.exhausted(tests);
+                cut |= !go;
+                go
+            },
+        );
+        run.pass_ns = run.clock.now_ns().saturating_sub(pass_start);
+        self.foveal_pass = Some((settled, run.pass_ns));
+        // Not cut: every selected pair was settled. The metrics count the pairs of the same
+        // prefix within FOVEAL_DEG of the same point, the same test when the radius is not
+        // widened by uncertainty.
+        self.foveal_known = (!cut && radius == FOVEAL_DEG).then_some(settled);
+        self.foveal_marked = radius == FOVEAL_DEG;
+    }
+
+    /// Pass: settle every root-separated pair of the frame in one go, as far as the meter
+    /// allows (see `NarrowPhase::settle_separate_roots`).
+    fn root_pass(&mut self, input: &FrameInput<'_>, run: &mut Run<'_>) {
+        let roots_start = run.clock.now_ns();
+        settle_roots(&mut self.narrow, input, &mut run.meter);
+        run.pass_ns += run.clock.now_ns().saturating_sub(roots_start);
+    }
+
+    /// Pass: the pairs within the fovea, whole and nearest the fixation first, where the gaze
+    /// rings find them, if the frame can pay for placing the rings.
+    fn rings_fovea_pass(
+        &mut self,
+        input: &FrameInput<'_>,
+        run: &mut Run<'_>,
+        columns: &crate::broad_phase::Columns,
+        px: [f64; 2],
+        rings: &mut RingsState,
+        r: &mut FrameReport,
+    ) {
+        if !self.rings_cost.admits(1.0, RINGS_SHARE, &run.meter) {
+            return;
+        }
+        let fovea_start = run.clock.now_ns();
+        rings.placed = self
+            .rings
+            .fovea(
+                &mut self.narrow,
+                input.tree,
+                input.world,
+                columns,
+                input.viewer,
+                px,
+                run.uncertainty_deg,
+                &mut run.meter,
+            )
+            .is_some();
+        if rings.placed {
+            self.rings_cost.learn(self.rings.setup_ns() as f64);
+        }
+        r.gaze_rings = rings.placed;
+        run.pass_ns += run.clock.now_ns().saturating_sub(fovea_start);
+    }
+
+    /// Run: the scheduler in its own order (prioritised when it asked, with the frame's view),
+    /// and learn what the ordering cost. A prioritisation the deadline cut short is priced per
+    /// pair it reached.
+    fn ordered_run(
+        &mut self,
+        input: &FrameInput<'_>,
+        run: &mut Run<'_>,
+        prioritised: bool,
+        t1: u64,
+    ) {
+        let view = run.fixation_px.map(|px| FrameView {
             viewer: input.viewer,
             fixation_px: px,
             model: self.config.schedule_model,
-            uncertainty_deg,
+            uncertainty_deg: run.uncertainty_deg,
         });
         let work = Work {
             tree: input.tree,
@@ -559,75 +574,80 @@ impl Collider {
             priorities: &self.priorities,
             calibration: &self.calibration,
         };
-        if affordable {
-            self.scheduler.run(&mut self.narrow, &work, &mut meter);
-            // A prioritisation the deadline cut short is priced per pair it reached.
-            let reached = if !prioritised
-                || (self.priorities.bodies_done
-                    && (self.priorities.reached == n
-                        || schedule::needs(self.config.scheduler).bodies_only))
-            {
-                n
-            } else {
-                self.priorities.reached.max(1)
-            };
-            if matches!(budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_)) && n > 0 {
-                let cost = (t1 - t_meter - pass_ns.min(t1 - t_meter) + self.scheduler.ordering_ns())
-                    as f64
-                    / reached as f64;
-                self.ordering_cost.learn(cost);
-            }
+        self.scheduler.run(&mut self.narrow, &work, &mut run.meter);
+        let n = run.n;
+        let reached = if !prioritised
+            || (self.priorities.bodies_done
+                && (self.priorities.reached == n || self.passes.needs.bodies_only))
+        {
+            n
         } else {
-            self.scheduler.forget();
-            // Shed: the root-separated pairs settled in one pass (above, or here for the
-            // schedulers whose order it would have changed), then the gaze rings where the broad
-            // phase has columns to find the pairs by and the scheduler is one that uses gaze (see
-            // `schedule::rings`): the pairs within the fovea resolved whole, nearest the fixation
-            // first, then round-robin, the outer ring first; round-robin in candidate order
-            // otherwise. The placing costs a few dozen flops per column and a pass over the x of
-            // the bodies of the columns near the fixation; a frame too short to pay for it
-            // (learnt like the ordering's cost, see `CostGate`) runs plain round-robin.
-            if !roots_first && meter.counts_time() {
-                settle_roots(&mut self.narrow, input, &mut meter);
-            }
-            if rings_placed {
-                // The rings are placed and the fovea done (settled, or the budget spent on it):
-                // round-robin over the rest.
-                self.rings.rest(&mut self.narrow, &work, &mut meter);
-            } else {
-                match rings_at {
-                    // Asked once a frame: the gate counts the frames that could not pay.
-                    Some((columns, px))
-                        if !rings_asked && rings_affordable(&meter, &mut self.rings_cost) =>
-                    {
-                        r.gaze_rings = self.rings.run(
-                            &mut self.narrow,
-                            &work,
-                            columns,
-                            input.viewer,
-                            px,
-                            uncertainty_deg,
-                            &mut meter,
-                        );
-                        if r.gaze_rings {
-                            self.rings_cost.learn(self.rings.setup_ns() as f64);
-                        } else {
-                            self.fallback.run(&mut self.narrow, &work, &mut meter);
-                        }
-                    }
-                    _ => self.fallback.run(&mut self.narrow, &work, &mut meter),
+            self.priorities.reached.max(1)
+        };
+        if matches!(run.budget, FrameBudget::Deadline(_) | FrameBudget::Wall(_)) && n > 0 {
+            let spent = t1 - run.t_meter;
+            let cost = (spent - run.pass_ns.min(spent) + self.scheduler.ordering_ns()) as f64
+                / reached as f64;
+            self.ordering_cost.learn(cost);
+        }
+    }
+
+    /// Run, when the frame cannot pay for its ordering: the root-separated pairs settled in one
+    /// pass (before, or here for the schedulers whose order it would have changed), then the
+    /// gaze rings where the broad phase has columns to find the pairs by and the scheduler is one
+    /// that uses gaze (see `schedule::rings`): the pairs within the fovea resolved whole,
+    /// nearest the fixation first, then round-robin, the outer ring first; round-robin in
+    /// candidate order otherwise. The placing costs a few dozen flops per column and a pass over
+    /// the x of the bodies of the columns near the fixation; a frame too short to pay for it
+    /// (learnt like the ordering's cost, see `CostGate`) runs plain round-robin.
+    fn shed_run(
+        &mut self,
+        input: &FrameInput<'_>,
+        run: &mut Run<'_>,
+        roots_first: bool,
+        rings_at: Option<(&crate::broad_phase::Columns, [f64; 2])>,
+        rings: RingsState,
+        r: &mut FrameReport,
+    ) {
+        self.scheduler.forget();
+        if !roots_first && run.meter.counts_time() {
+            settle_roots(&mut self.narrow, input, &mut run.meter);
+        }
+        let work = Work {
+            tree: input.tree,
+            world: input.world,
+            view: None,
+            priorities: &self.priorities,
+            calibration: &self.calibration,
+        };
+        if rings.placed {
+            // The rings are placed and the fovea done (settled, or the budget spent on it):
+            // round-robin over the rest.
+            self.rings.rest(&mut self.narrow, &work, &mut run.meter);
+            return;
+        }
+        match rings_at {
+            // Asked once a frame: the gate counts the frames that could not pay.
+            Some((columns, px))
+                if !rings.asked && self.rings_cost.admits(1.0, RINGS_SHARE, &run.meter) =>
+            {
+                r.gaze_rings = self.rings.run(
+                    &mut self.narrow,
+                    &work,
+                    columns,
+                    input.viewer,
+                    px,
+                    run.uncertainty_deg,
+                    &mut run.meter,
+                );
+                if r.gaze_rings {
+                    self.rings_cost.learn(self.rings.setup_ns() as f64);
+                } else {
+                    self.fallback.run(&mut self.narrow, &work, &mut run.meter);
                 }
             }
+            _ => self.fallback.run(&mut self.narrow, &work, &mut run.meter),
         }
-        let deemed = self.narrow.close_frame(input.world.len());
-        let t2 = clock.now_ns();
-        // The foveal pass is sphere tests: narrow-phase time.
-        profile.prioritise_ns = (t1 - t0).saturating_sub(pass_ns);
-        profile.narrow_ns = t2 - t1 + pass_ns.min(t1 - t0);
-        r.candidate_pairs = self.narrow.pairs.len() as u32;
-        r.deemed = deemed;
-        r.sphere_tests = self.narrow.tests;
-        r.budget_exhausted = meter.was_exhausted();
     }
 
     /// An exact frame: every order gives the same answer, so skip the ordering and resolve every
@@ -640,7 +660,7 @@ impl Collider {
     /// fovea test. That work is the metrics': the blocks' tally is timed and counted in
     /// [`PhaseProfile::measure_ns`], not in the narrow phase (on several threads, as its time on
     /// all of them over the threads).
-    fn collide_exact(
+    fn exact_pass(
         &mut self,
         input: &FrameInput<'_>,
         fixation: Option<Fixation>,
@@ -893,6 +913,7 @@ pub fn true_weight(
 mod tests {
     use super::*;
     use crate::budget::Ticking;
+    use crate::budget::gate::{LEARN_FRAMES, PROBE_EVERY};
     use crate::{BudgetSpec, FrozenClock, SchedulerKind, Simulation};
 
     /// The default config at `bodies` bodies, exact, and its scene after `frames` exact frames

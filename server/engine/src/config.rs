@@ -273,6 +273,48 @@ impl SchedulerKind {
     }
 }
 
+/// Ablation switches of the priced scheduler ([`crate::schedule::Priced`]): which parts of the
+/// price are used.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct PricedOptions {
+    /// Weigh by the calibrated expected false-positive gap (off: every pair is assumed a false
+    /// positive with the same gap).
+    pub probability: bool,
+    /// Divide by the calibrated expected tests to settle (off: every pair costs the same).
+    pub cost: bool,
+    /// Weigh by the perceptual fall-off around the fixation (off: gaze-blind).
+    pub gaze: bool,
+}
+
+impl Default for PricedOptions {
+    fn default() -> Self {
+        Self {
+            probability: true,
+            cost: true,
+            gaze: true,
+        }
+    }
+}
+
+impl PricedOptions {
+    /// Short label for tables: `priced`, or `priced-no-probability` and so on.
+    pub fn label(&self) -> String {
+        let mut s = String::from("priced");
+        for (on, name) in [
+            (self.probability, "probability"),
+            (self.cost, "cost"),
+            (self.gaze, "gaze"),
+        ] {
+            if !on {
+                s.push_str("-no-");
+                s.push_str(name);
+            }
+        }
+        s
+    }
+}
+
 /// Everything a [`crate::Simulation`] is built from.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -308,7 +350,7 @@ pub struct SimConfig {
     /// Broad-phase algorithm (`auto` picks by the number of bodies).
     pub broad_phase: crate::broad_phase::BroadPhaseKind,
     /// Ablation switches of the priced scheduler (all on by default).
-    pub priced: crate::schedule::PricedOptions,
+    pub priced: PricedOptions,
     /// Worker threads the frame's phases may use (1..=64). Results do not depend on it: under a
     /// sphere-test budget frame reports are bit-identical for every thread count.
     pub threads: u32,
@@ -349,7 +391,7 @@ impl Default for SimConfig {
             calibration_warmup: 60,
             threads: 1,
             broad_phase: crate::broad_phase::BroadPhaseKind::Auto,
-            priced: crate::schedule::PricedOptions::default(),
+            priced: PricedOptions::default(),
             renumber_every: DEFAULT_RENUMBER_EVERY,
             fovea_first: false,
         }

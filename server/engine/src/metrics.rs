@@ -14,11 +14,12 @@
 //! so the result is the same for every thread count; a frame of at most one run sums in plain
 //! pair order.
 
-use crate::budget::Clock;
+use crate::clock::Clock;
 use crate::fixation::FrameView;
 use crate::math::Vec3;
 use crate::narrow_phase::{MARK_IN, MARK_OUT, NarrowPhase, PairState, PairStatus};
 use crate::perception::Viewer;
+use crate::simd::widest;
 use crate::sphere_tree::SphereTree;
 use crate::world::World;
 
@@ -178,11 +179,7 @@ impl<'a> Fovea<'a> {
                 }
             }
         };
-        #[cfg(target_arch = "x86_64")]
-        if let Some(simd) = pulp::x86::V3::try_new() {
-            return simd.vectorize(fill);
-        }
-        fill()
+        widest!(V3, fill)
     }
 
     /// The test of [`Self::may_contain_ball`] for a ball already grown into ray space: with
@@ -534,11 +531,7 @@ impl Counts {
             #[inline(always)]
             || self.count_near_in(pairs, fovea, near, position)
         };
-        #[cfg(target_arch = "x86_64")]
-        if let Some(simd) = pulp::x86::V3::try_new() {
-            return simd.vectorize(count);
-        }
-        count()
+        widest!(V3, count)
     }
 
     /// [`Self::count_near`], compiled for whatever vector width the caller enables: the near

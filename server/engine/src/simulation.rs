@@ -5,17 +5,15 @@
 //! every phase spends the same budget.
 
 use crate::broad_phase::BroadPhase;
-use crate::budget::{Clock, FrameBudget, FrozenClock};
-use crate::collider::{Collider, FrameInput};
+use crate::budget::{Clock, FrameBudget, FramePlan, FramePolicy, FrozenClock};
+use crate::collider::{Collider, FrameInput, NarrowFrame};
 use crate::config::{BudgetSpec, ConfigError, SimConfig, Truth};
 use crate::fixation::Fixation;
-use crate::guard::{GUARD_SETTLE_S, Guard};
 use crate::narrow_phase::{NarrowPhase, PairState};
 use crate::perception::Viewer;
 use crate::report::{FrameReport, PhaseProfile};
 use crate::response::Response;
 use crate::shape::Star;
-use crate::shedding::Shedder;
 use crate::sphere_tree::SphereTree;
 use crate::world::World;
 use std::sync::Arc;
@@ -35,20 +33,15 @@ pub struct Simulation {
     report: FrameReport,
     next_index: u64,
     sim_time: f64,
-    /// What a whole-frame wall-clock budget sheds, and its learnt costs.
-    shedder: Shedder,
+    /// What a wall-clock budget learns across frames: the guard band, the shedding's costs and
+    /// the pool's hand-back.
+    policy: FramePolicy,
     /// Per body slot, the body's id (its index at generation): the numbering outside the engine.
     ids: Vec<u32>,
     /// Per body id, its slot (the inverse of `ids`).
     slots: Vec<u32>,
     /// The threads a frame runs on, with more than one (see [`Self::step`]).
     pool: Option<Arc<rayon::ThreadPool>>,
-    /// The last frame's last clock reading, and the learnt wait for the pool to hand a frame
-    /// back after it (a wall-clock budget's frames end this much earlier).
-    frame_end_ns: u64,
-    handback_ns: u64,
-    /// How much earlier than a wall-clock budget frames aim to end, learnt from their lateness.
-    guard: Guard,
 }
 
 /// A pool of `threads` threads, or none for one: a frame on one thread runs where it is called.
@@ -105,6 +98,18 @@ impl Simulation {
         Ok(sim)
     }
 
+    /// A simulation of `config` whose narrow phase runs `scheduler` instead of the one `config`
+    /// names (for schedulers defined outside the engine's list, as the tests' toy one).
+    #[cfg(test)]
+    pub(crate) fn with_scheduler(
+        config: SimConfig,
+        scheduler: Box<dyn crate::schedule::Scheduler>,
+    ) -> Result<Self, ConfigError> {
+        let mut sim = Self::new(config)?;
+        sim.collider = Collider::with_scheduler(&sim.config, &sim.tree, &sim.viewer, scheduler)?;
+        Ok(sim)
+    }
+
     /// Mean sphere tests per frame of the exact narrow phase over `frames` frames of this scene,
     /// counted after `calibration_warmup` uncounted frames, measured on a copy (this simulation is
     /// not advanced).
@@ -144,13 +149,10 @@ impl Simulation {
             report: FrameReport::default(),
             next_index: 0,
             sim_time: 0.0,
-            shedder: Shedder::default(),
+            policy: FramePolicy::default(),
             ids: (0..world.len() as u32).collect(),
             slots: (0..world.len() as u32).collect(),
             pool: thread_pool(config.threads as usize),
-            frame_end_ns: 0,
-            handback_ns: 0,
-            guard: Guard::default(),
             tree,
             world,
             broad,
@@ -260,7 +262,7 @@ impl Simulation {
     /// every deemed pair would not fit. The first frame has learnt no tail and overruns by it; the
     /// audit, when on, runs after the budgeted work (a diagnostic, outside the budget). Where the scene's broad phase has regions (the grid, at
     /// large N), the frame also sheds what does not fit in perceptual order (see
-    /// [`crate::shedding`]) and reports it ([`FrameReport::stale_regions`]); sphere-test and exact
+    /// [`crate::budget::shedding`]) and reports it ([`FrameReport::stale_regions`]); sphere-test and exact
     /// budgets run every phase whole.
     ///
     /// With more than one thread the frame runs on the simulation's own pool of that many
@@ -281,35 +283,8 @@ impl Simulation {
             Some(pool) => pool.install(|| self.step_from(t0, fixation, clock)),
             None => self.step_from(t0, fixation, clock),
         }
-        let FrameBudget::Wall(ns) = self.budget else {
-            return &self.report;
-        };
-        // The frame as its caller sees it ends here (after the pool's hand-back): its lateness
-        // sets the guard band of the next frames, but for two kinds of frame late by their own
-        // work rather than by a stall (see `guard`). The clock is read only where the reading
-        // is used.
-        let learn = self.sim_time >= GUARD_SETTLE_S && !self.report.budget_spent_before_narrow;
-        if !learn && !pooled {
-            return &self.report;
-        }
-        let end = clock.now_ns();
-        if learn {
-            self.guard
-                .learn(ns, self.report.guard_ns, end.saturating_sub(t0));
-        }
-        if pooled {
-            // The pool hands the finished frame back after the frame's last clock read: a wait
-            // (7 us median, 35 us at the 99th percentile at N = 10,000 on two threads) that the
-            // frame's deadline did not see. Learnt as an envelope (a quarter of a rise, a 32nd
-            // of a fall a frame) and taken off the next frames' deadlines, so that the frame the
-            // caller sees, not only the engine's part of it, holds the budget.
-            let back = end.saturating_sub(self.frame_end_ns);
-            self.handback_ns = if back > self.handback_ns {
-                self.handback_ns + (back - self.handback_ns) / 4
-            } else {
-                self.handback_ns - (self.handback_ns - back) / 32
-            };
-        }
+        self.policy
+            .after_frame(self.budget, &self.report, self.sim_time, pooled, t0, clock);
         &self.report
     }
 
@@ -348,63 +323,117 @@ impl Simulation {
         }
     }
 
-    /// [`Self::step`] on the calling thread, its frame started at `t0`.
+    /// [`Self::step`] on the calling thread, its frame started at `t0`: the frame's stages in
+    /// their order ([`STAGES`]), each timed by [`Self::run_stage`].
     fn step_from(&mut self, t0: u64, fixation: Option<Fixation>, clock: &dyn Clock) {
-        let mut profile = PhaseProfile::default();
-        // The frame budget counts from here: integration and the broad phase spend it too.
-        // Less the pool's learnt hand-back and the guard band learnt from late frames (see
-        // `guard`).
-        let guard_ns = match self.budget {
-            FrameBudget::Wall(_) => self.guard.margin_ns(),
-            _ => 0,
+        let plan = self.policy.plan(self.budget, t0);
+        let fixation_rejected = fixation.is_some_and(|f| !f.is_usable());
+        let fixation = fixation.filter(Fixation::is_usable);
+        let mut frame = Frame {
+            clock,
+            plan,
+            fixation,
+            report: FrameReport {
+                index: self.next_index,
+                fixation,
+                fixation_rejected,
+                guard_ns: plan.guard_ns,
+                ..FrameReport::default()
+            },
+            profile: PhaseProfile::default(),
+            last_ns: t0,
+            shedding: plan.shedding(!self.broad.regions().is_empty()),
+            searched: 0,
+            pairs: 0,
+            broad_end_ns: t0,
+            narrow_budget: plan.budget,
+            foveal_prefix: None,
+            sample: (0, None),
+            tail_end_ns: t0,
         };
-        let budget = match self.budget.starting_at(t0) {
-            FrameBudget::Deadline(d) => {
-                FrameBudget::Deadline(d.saturating_sub(self.handback_ns.saturating_add(guard_ns)))
-            }
-            b => b,
+        for stage in STAGES {
+            self.run_stage(stage, &mut frame);
+        }
+        self.policy.frame_ended(frame.last_ns);
+        frame.report.profile = frame.profile;
+        self.report = frame.report;
+    }
+
+    /// Run `stage` of `frame` and time it: the one place a stage's time is read and booked in
+    /// the frame's [`PhaseProfile`]. A stage that did nothing ([`Lap::Skipped`]) does not read
+    /// the clock (a read is not free); the next stage's time then counts from the last reading.
+    fn run_stage(&mut self, stage: Stage, frame: &mut Frame<'_>) {
+        let lap = match stage {
+            Stage::Renumber => self.renumber_stage(frame),
+            Stage::Integrate => self.integrate(),
+            Stage::BroadPhase => self.broad_phase(frame),
+            Stage::NarrowPhase => self.narrow_phase(frame),
+            Stage::Respond => self.respond(frame),
+            Stage::Measure => self.measure(frame),
+            Stage::Audit => self.audit(frame),
+            Stage::Learn => self.learn(frame),
         };
-        let deadline = match (self.budget, budget) {
-            (FrameBudget::Wall(ns), FrameBudget::Deadline(d)) => Some((d, ns)),
-            _ => None,
-        };
-        // The clock is read again only in a frame that renumbers: a read is not free. Under a
-        // wall-clock budget the bodies are renumbered only at creation: a renumbering costs about
-        // 0.1 us per body (10 ms at 100,000 bodies), more than such a frame can spare.
+        if lap == Lap::Skipped {
+            return;
+        }
+        let now = frame.clock.now_ns();
+        let spent = now - frame.last_ns;
+        frame.last_ns = now;
+        let p = &mut frame.profile;
+        match stage {
+            Stage::Renumber => p.renumber_ns += spent,
+            Stage::Integrate => p.integrate_ns += spent,
+            Stage::BroadPhase => p.broad_ns += spent,
+            // The collider splits its time between prioritisation and the narrow phase itself
+            // (its passes interleave them), and books an exact frame's counting as measurement.
+            Stage::NarrowPhase => {}
+            Stage::Respond => p.response_ns += spent,
+            // The audit is booked as measurement, but after the tail a wall-clock budget learns
+            // (see `Self::learn`).
+            Stage::Measure | Stage::Audit => p.measure_ns += spent,
+            Stage::Learn => {}
+        }
+    }
+
+    /// Stage: renumber the bodies every [`SimConfig::renumber_every`] frames (see
+    /// [`Self::renumber`]). Under a wall-clock budget the bodies are renumbered only at creation:
+    /// a renumbering costs about 0.1 us per body (10 ms at 100,000 bodies), more than such a
+    /// frame can spare.
+    fn renumber_stage(&mut self, frame: &Frame<'_>) -> Lap {
         let every = u64::from(self.config.renumber_every);
-        let tr = if every > 0
-            && deadline.is_none()
+        if every > 0
+            && !frame.plan.is_wall()
             && self.next_index > 0
             && self.next_index.is_multiple_of(every)
             && self.broad.has_spatial_order()
         {
             self.renumber();
-            clock.now_ns()
+            Lap::Timed
         } else {
-            t0
-        };
-        profile.renumber_ns = tr - t0;
-        self.integrate();
-        let t1 = clock.now_ns();
-        profile.integrate_ns = t1 - tr;
+            Lap::Skipped
+        }
+    }
 
-        let fixation_rejected = fixation.is_some_and(|f| !f.is_usable());
-        let fixation = fixation.filter(Fixation::is_usable);
-        let mut r = FrameReport {
-            index: self.next_index,
-            fixation,
-            fixation_rejected,
-            guard_ns,
-            ..FrameReport::default()
-        };
-        let shedding = deadline.filter(|_| !self.broad.regions().is_empty());
-        let mut searched = 0;
-        if let Some((end, ns)) = shedding {
-            let mut pacer = self.shedder.pacer(end, ns);
-            let order = self.shedder.order(
+    /// Stage: advance every body by one time step.
+    fn integrate(&mut self) -> Lap {
+        self.world
+            .integrate_threads(self.config.scene.dt, self.config.threads as usize);
+        Lap::Timed
+    }
+
+    /// Stage: the broad phase. A wall-clock frame whose broad phase has regions searches them in
+    /// perceptual order for as long as the frame can pay for their pairs (see
+    /// [`crate::budget::shedding`]); otherwise every region is searched.
+    fn broad_phase(&mut self, frame: &mut Frame<'_>) -> Lap {
+        let clock = frame.clock;
+        let r = &mut frame.report;
+        if let Some((end, ns)) = frame.shedding {
+            let shedder = &mut self.policy.shedder;
+            let mut pacer = shedder.pacer(end, ns);
+            let order = shedder.order(
                 self.broad.regions(),
                 &self.viewer,
-                fixation,
+                frame.fixation,
                 2.0 * self.tree.root_radius(),
             );
             let pass = self
@@ -412,104 +441,137 @@ impl Simulation {
                 .update_in_order(&self.world.position, order, &mut |pairs| {
                     pacer.go_on(clock.now_ns(), pairs)
                 });
-            searched = pass.searched as usize;
+            frame.searched = pass.searched as usize;
             r.regions = self.broad.regions().len() as u32;
             r.stale_regions = pass.stale;
             r.stale_pairs = pass.stale_pairs;
-            r.foveal_stale = self.shedder.foveal_regions().saturating_sub(searched) as u32;
+            r.foveal_stale = shedder.foveal_regions().saturating_sub(frame.searched) as u32;
         } else {
             self.broad.update(&self.world.position);
         }
-        let t2 = clock.now_ns();
-        profile.broad_ns = t2 - t1;
+        Lap::Timed
+    }
 
-        let pairs = self.broad.pairs().len();
-        // Under a wall-clock budget the narrow phase stops early enough for the learnt tail
-        // (deeming, response, metrics) at every N: the budget covers the whole frame.
-        let narrow_budget = match deadline {
-            Some((end, ns)) => FrameBudget::Deadline(self.shedder.narrow_deadline(end, ns, pairs)),
-            None => budget,
-        };
-        r.budget_spent_before_narrow = matches!(narrow_budget, FrameBudget::Deadline(d) if t2 >= d);
+    /// Stage: prioritise and run the narrow phase under what is left of the budget (the
+    /// collider's passes, see [`Collider::collide_frame`]). Pairs are listed region by
+    /// region in the searched order, so only the first regions' pairs can be foveal.
+    fn narrow_phase(&mut self, frame: &mut Frame<'_>) -> Lap {
+        // The broad phase's stage ended at the last reading.
+        frame.broad_end_ns = frame.last_ns;
+        frame.pairs = self.broad.pairs().len();
+        frame.narrow_budget = self.policy.narrow_budget(&frame.plan, frame.pairs);
+        frame.report.budget_spent_before_narrow =
+            matches!(frame.narrow_budget, FrameBudget::Deadline(d) if frame.last_ns >= d);
         let input = frame_input(&self.tree, &self.world, &self.broad, &self.viewer);
-        let foveal_prefix = shedding.map(|_| {
-            let foveal = self.shedder.foveal_regions().min(searched);
+        frame.foveal_prefix = frame.shedding.map(|_| {
+            let foveal = self.policy.shedder.foveal_regions().min(frame.searched);
             self.broad.region_pairs_before(foveal)
         });
-        self.collider.collide_foveal_first(
-            &input,
-            fixation,
-            narrow_budget,
-            clock,
-            &mut r,
-            &mut profile,
-            foveal_prefix,
-        );
-        let t3 = clock.now_ns();
-        r.responses = self.respond();
-        let t4 = clock.now_ns();
-        profile.response_ns = t4 - t3;
+        let narrow = NarrowFrame {
+            fixation: frame.fixation,
+            budget: frame.narrow_budget,
+            clock: frame.clock,
+            foveal_prefix: frame.foveal_prefix,
+        };
+        self.collider
+            .collide_frame(&input, &narrow, &mut frame.report, &mut frame.profile);
+        Lap::Timed
+    }
 
+    /// Stage: exchange the velocities of approaching pairs on the collision list (real and
+    /// deemed); the frame's simulated time advances.
+    ///
+    /// Under the leaf truth the paper's exchange (whole velocities, along the centre line);
+    /// under the shape truth the velocity components along the stars' contact normal, so that
+    /// bodies bounce where they visibly touch.
+    fn respond(&mut self, frame: &mut Frame<'_>) -> Lap {
+        frame.report.responses = match self.config.scene.truth {
+            Truth::LeafSpheres => self
+                .response
+                .exchange(&mut self.world, self.collider.collisions()),
+            Truth::Shape => self.response.exchange_on_shape(
+                &mut self.world,
+                &self.tree,
+                self.collider.collisions_settled(),
+                self.config.threads as usize,
+            ),
+        };
         self.next_index += 1;
         self.sim_time += self.config.scene.dt;
-        r.sim_time = self.sim_time;
+        frame.report.sim_time = self.sim_time;
+        Lap::Timed
+    }
+
+    /// Stage: Δ, P and the counts of the frame (section 3), within the plan's effort (see
+    /// [`crate::budget::FramePolicy::effort`]).
+    fn measure(&mut self, frame: &mut Frame<'_>) -> Lap {
         let input = frame_input(&self.tree, &self.world, &self.broad, &self.viewer);
-        // Pairs are listed region by region in the searched order; only the first regions can
-        // hold foveal pairs.
-        // Under a wall-clock budget Δ and P are summed over a sample sized to the budget where
-        // summing every deemed pair would not fit (the report gives the stride and the standard
-        // errors; `measure_exactly` sums them all, off the clock).
-        let effort = match deadline {
-            Some((_, ns)) => crate::metrics::Effort {
-                foveal_known: self.collider.foveal_known(),
-                foveal_marked: self.collider.foveal_marked(),
-                ..self.shedder.effort(ns, foveal_prefix.unwrap_or(usize::MAX))
-            },
-            None => crate::metrics::Effort::default(),
-        };
-        let (sampled, sample_started) = self.collider.measure_metrics(
-            &input,
-            fixation,
-            effort,
-            deadline.map(|_| clock),
-            &mut r,
+        let effort = self.policy.effort(
+            &frame.plan,
+            frame.foveal_prefix,
+            self.collider.foveal_known(),
+            self.collider.foveal_marked(),
         );
-        // The tail a whole-frame budget learns ends here: the audit (a diagnostic, checking every
-        // deemed pair exactly) runs after the budgeted work. Counted as tail, its cost, which
-        // grows with the deemed pairs, would deem more pairs the next frame, until every pair is.
-        let t_tail = clock.now_ns();
+        frame.sample = self.collider.measure_metrics(
+            &input,
+            frame.fixation,
+            effort,
+            frame.plan.deadline.map(|_| frame.clock),
+            &mut frame.report,
+        );
+        Lap::Timed
+    }
+
+    /// Stage: the audit, in audit mode: the exact answer for every deemed pair, and the pairs a
+    /// shed broad phase missed. The tail a whole-frame budget learns ends where this stage
+    /// starts: the audit is a diagnostic that runs after the budgeted work. Counted as tail, its
+    /// cost, which grows with the deemed pairs, would deem more pairs the next frame, until every
+    /// pair is.
+    fn audit(&mut self, frame: &mut Frame<'_>) -> Lap {
+        frame.tail_end_ns = frame.last_ns;
+        let (sampled, sample_started) = frame.sample;
         if let Some(t) = sample_started {
-            self.shedder.learn_sample(sampled, t_tail.saturating_sub(t));
+            self.policy
+                .shedder
+                .learn_sample(sampled, frame.tail_end_ns.saturating_sub(t));
         }
-        self.collider.audit_frame(&input, fixation, &mut r);
-        if r.stale_regions > 0
-            && let Some(a) = r.audit.as_mut()
+        let input = frame_input(&self.tree, &self.world, &self.broad, &self.viewer);
+        self.collider
+            .audit_frame(&input, frame.fixation, &mut frame.report);
+        if frame.report.stale_regions > 0
+            && let Some(a) = frame.report.audit.as_mut()
         {
             a.missed_pairs = missed_pairs(self.broad.pairs(), self.broad.all_pairs());
         }
-        let t5 = clock.now_ns();
-        self.frame_end_ns = t5;
-        // Plus what the narrow phase spent on the metrics' counts (an exact frame's).
-        profile.measure_ns += t5 - t4;
-        if deadline.is_some() {
-            // The tail: from where the narrow phase had to stop (or stopped) to the frame's end.
-            // A frame whose broad phase ran past that point starts its tail where the narrow
-            // phase started: counting the overrun as tail would move the next frame's narrow
-            // deadline earlier still, and a budget near the fixed work would lock into deeming
-            // every pair.
-            let narrow_end = match narrow_budget {
-                FrameBudget::Deadline(d) if r.budget_exhausted => d.max(t2),
-                _ => t2 + profile.prioritise_ns + profile.narrow_ns,
-            };
-            self.shedder
-                .learn(searched, t_tail.saturating_sub(narrow_end), pairs);
-            if let Some((settled, ns)) = self.collider.foveal_pass() {
-                self.shedder
-                    .learn_foveal(r.foveal_pairs, r.foveal_stale == 0, settled, ns);
-            }
+        Lap::Timed
+    }
+
+    /// Stage: what a wall-clock budget learns from the frame for the next ones (untimed: it
+    /// reads no clock). The tail runs from where the narrow phase had to stop (or stopped) to
+    /// the end of the measurement. A frame whose broad phase ran past that point starts its tail
+    /// where the narrow phase started: counting the overrun as tail would move the next frame's
+    /// narrow deadline earlier still, and a budget near the fixed work would lock into deeming
+    /// every pair.
+    fn learn(&mut self, frame: &Frame<'_>) -> Lap {
+        if !frame.plan.is_wall() {
+            return Lap::Skipped;
         }
-        r.profile = profile;
-        self.report = r;
+        let (r, profile, t2) = (&frame.report, &frame.profile, frame.broad_end_ns);
+        let narrow_end = match frame.narrow_budget {
+            FrameBudget::Deadline(d) if r.budget_exhausted => d.max(t2),
+            _ => t2 + profile.prioritise_ns + profile.narrow_ns,
+        };
+        self.policy.shedder.learn(
+            frame.searched,
+            frame.tail_end_ns.saturating_sub(narrow_end),
+            frame.pairs,
+        );
+        if let Some((settled, ns)) = self.collider.foveal_pass() {
+            self.policy
+                .shedder
+                .learn_foveal(r.foveal_pairs, r.foveal_stale == 0, settled, ns);
+        }
+        Lap::Skipped
     }
 
     /// The last frame's report with Δ and P summed over every deemed pair, computed off the
@@ -534,31 +596,6 @@ impl Simulation {
         &self.report
     }
 
-    /// Phase: advance every body by one time step.
-    fn integrate(&mut self) {
-        self.world
-            .integrate_threads(self.config.scene.dt, self.config.threads as usize);
-    }
-
-    /// Phase: exchange the velocities of approaching pairs on the collision list (real and deemed).
-    ///
-    /// Under the leaf truth the paper's exchange (whole velocities, along the centre line);
-    /// under the shape truth the velocity components along the stars' contact normal, so that
-    /// bodies bounce where they visibly touch.
-    fn respond(&mut self) -> u32 {
-        match self.config.scene.truth {
-            Truth::LeafSpheres => self
-                .response
-                .exchange(&mut self.world, self.collider.collisions()),
-            Truth::Shape => self.response.exchange_on_shape(
-                &mut self.world,
-                &self.tree,
-                self.collider.collisions_settled(),
-                self.config.threads as usize,
-            ),
-        }
-    }
-
     /// Exact colliding pairs among the current candidates (each resolved to completion).
     pub fn exact_colliding_pairs(&self) -> Vec<(u32, u32)> {
         let mut np = NarrowPhase::default();
@@ -572,6 +609,76 @@ impl Simulation {
         }
         out
     }
+}
+
+/// The stages of a frame, in their order: the paper's main loop (section 2) with the metrics
+/// (section 3) and the audit. [`Simulation::step`] runs them in this order and nowhere else.
+const STAGES: [Stage; 8] = [
+    Stage::Renumber,
+    Stage::Integrate,
+    Stage::BroadPhase,
+    Stage::NarrowPhase,
+    Stage::Respond,
+    Stage::Measure,
+    Stage::Audit,
+    Stage::Learn,
+];
+
+/// A stage of a frame (see [`STAGES`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Stage {
+    /// Renumber the bodies in the broad phase's spatial order, now and then.
+    Renumber,
+    /// Advance every body by one time step.
+    Integrate,
+    /// Find the candidate pairs (shed in perceptual order under a whole-frame budget).
+    BroadPhase,
+    /// Prioritise, and run the narrow phase under the budget (the collider's passes).
+    NarrowPhase,
+    /// Exchange velocities of the pairs on the collision list.
+    Respond,
+    /// Δ, P and the frame's counts.
+    Measure,
+    /// The exact answer for every deemed pair, in audit mode.
+    Audit,
+    /// What a wall-clock budget learns for the next frames.
+    Learn,
+}
+
+/// Whether a stage did work to be timed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Lap {
+    Timed,
+    Skipped,
+}
+
+/// One frame in flight: what its stages read (the plan under the budget, the fixation, the
+/// clock) and what they hand on (the report, the profile and what the budget learns from).
+struct Frame<'c> {
+    clock: &'c dyn Clock,
+    plan: FramePlan,
+    /// The fixation, if usable.
+    fixation: Option<Fixation>,
+    report: FrameReport,
+    profile: PhaseProfile,
+    /// The last clock reading: where the running stage started.
+    last_ns: u64,
+    /// Under a whole-frame budget whose broad phase has regions: its deadline and budget (ns).
+    shedding: Option<(u64, u64)>,
+    /// Regions the broad phase searched, of its order.
+    searched: usize,
+    /// Candidate pairs of the broad phase.
+    pairs: usize,
+    /// When the broad phase ended.
+    broad_end_ns: u64,
+    /// The narrow phase's budget (see [`FramePolicy::narrow_budget`]).
+    narrow_budget: FrameBudget,
+    /// The candidates that may be foveal (the pairs of the first regions searched), when shedding.
+    foveal_prefix: Option<usize>,
+    /// The pairs the metrics summed Δ and P over, and when that sum started.
+    sample: (u32, Option<u64>),
+    /// Where the measurement ended: the end of the tail a whole-frame budget learns.
+    tail_end_ns: u64,
 }
 
 /// Run `f` (a frame, on a thread of its pool) while the pool's other threads stay awake for it.
@@ -684,7 +791,7 @@ mod tests {
             for _ in 0..5 {
                 sim.step(Some(Fixation::at(0.5, 0.5)), &clock);
             }
-            sim.handback_ns
+            sim.policy.handback_ns()
         };
         assert_eq!(run(1), 0);
         let learnt = run(2);
@@ -776,7 +883,7 @@ mod tests {
             let start = clock.now.load(Relaxed);
             if stall_ns > 0 {
                 // The frame aims to end `margin` before its budget.
-                let margin = sim.guard.margin_ns();
+                let margin = sim.policy.guard().margin_ns();
                 clock
                     .stall_from
                     .store(start + budget_ns - margin - TICK, Relaxed);
@@ -790,7 +897,7 @@ mod tests {
             (guard, spent)
         };
         // Past the first frames' learning (and their lateness, forgotten with the window).
-        for _ in 0..crate::guard::GUARD_WINDOW + 10 {
+        for _ in 0..crate::budget::guard::GUARD_WINDOW + 10 {
             frame(0);
         }
         let (calm, spent) = frame(0);
@@ -810,7 +917,7 @@ mod tests {
             spent <= budget_ns - guard + calm + TICK,
             "{spent} with a guard of {guard}"
         );
-        for _ in 0..crate::guard::GUARD_WINDOW {
+        for _ in 0..crate::budget::guard::GUARD_WINDOW {
             frame(0);
         }
         assert!(frame(0).0 <= calm + TICK, "the stalls have left the window");

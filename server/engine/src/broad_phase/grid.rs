@@ -54,6 +54,7 @@ use std::ops::Range;
 use super::{LANES, PairBuffer, Region, RegionPass, put_lanes};
 use crate::math::Vec3;
 use crate::prefetch::Prefetcher;
+use crate::simd::widest;
 #[cfg(target_arch = "x86_64")]
 use pulp::x86::{V3, V4};
 use wide::{CmpLe, f64x4};
@@ -836,14 +837,11 @@ impl Grid {
                 shift,
                 first: t * per_part,
             };
-            #[cfg(target_arch = "x86_64")]
-            if let Some(simd) = V3::try_new() {
-                return simd.vectorize(
-                    #[inline(always)]
-                    || part.deal(Avx2(simd), chunk, &mut out, counts),
-                );
-            }
-            part.deal(Scalar, chunk, &mut out, counts);
+            widest!(
+                V3,
+                |simd| part.deal(Avx2(simd), chunk, &mut out, counts),
+                part.deal(Scalar, chunk, &mut out, counts),
+            );
         });
         (0..parts * buckets).all(|k| {
             let (t, b) = (k / buckets, k % buckets);
@@ -982,16 +980,11 @@ impl Rows<'_> {
     /// (growing it as needed); returns the new length. In AVX-512 rounds where the processor has
     /// them (the same pairs in the same order), else in the baseline's.
     fn search(&self, cells: [Range<usize>; 3], buf: &mut Vec<(u32, u32)>, len: usize) -> usize {
-        #[cfg(target_arch = "x86_64")]
-        if self.wide
-            && let Some(simd) = V4::try_new()
-        {
-            return simd.vectorize(
-                #[inline(always)]
-                || self.search_in(Avx512(simd), cells, buf, len),
-            );
-        }
-        self.search_in(Baseline, cells, buf, len)
+        widest!(
+            V4 if self.wide,
+            |simd| self.search_in(Avx512(simd), cells, buf, len),
+            self.search_in(Baseline, cells, buf, len),
+        )
     }
 
     #[inline(always)]

@@ -11,9 +11,8 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use super::{Scheduler, Work, round_robin};
+use super::{Needs, Passes, Scheduler, Work, round_robin};
 use crate::budget::Meter;
-use crate::config::SchedulerKind;
 use crate::narrow_phase::{NarrowPhase, PairStatus, StepOutcome};
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -56,8 +55,11 @@ fn price(np: &NarrowPhase, i: usize) -> f32 {
 }
 
 impl Scheduler for ExpectedGain {
-    fn kind(&self) -> SchedulerKind {
-        SchedulerKind::ExpectedGain
+    fn passes(&self) -> Passes {
+        Passes::perceptual(Needs {
+            weight: true,
+            ..Needs::default()
+        })
     }
 
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {

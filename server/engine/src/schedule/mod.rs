@@ -1,8 +1,12 @@
 //! Schedulers: the order in which the narrow phase spends its budget (paper sections 2 and 4).
 //!
 //! A scheduler only decides *which pair steps next*; stepping, counting and interruption belong to
-//! [`NarrowPhase`] and [`Meter`]. Adding a scheduler is one file implementing [`Scheduler`] plus a
-//! line in [`for_kind`]. Pairs left open when a scheduler returns are deemed colliding by the caller.
+//! [`NarrowPhase`] and [`Meter`]. What else a scheduler wants of a frame (prioritisation, the passes
+//! the narrow phase runs around its own run, whether its ordering is worth a wall-clock frame's
+//! time) it declares through [`Scheduler::passes`]: the collider asks nothing else of it. Adding a
+//! scheduler is one file implementing [`Scheduler`] plus a line in [`for_kind`] (the unit tests
+//! define a toy one and run it open and closed loop). Pairs left open when a scheduler returns are
+//! deemed colliding by the caller.
 
 pub mod calibration;
 mod expected_gain;
@@ -14,14 +18,14 @@ mod round_robin;
 mod sequential;
 
 pub use expected_gain::ExpectedGain;
-pub use priced::{Priced, PricedOptions};
+pub use priced::Priced;
 pub use priority::{Needs, Priorities, Prioritiser};
 pub use priority_queue::PriorityQueue;
 pub use round_robin::RoundRobin;
 pub use sequential::Sequential;
 
 use crate::budget::Meter;
-use crate::config::SchedulerKind;
+use crate::config::{PricedOptions, SchedulerKind};
 use crate::fixation::FrameView;
 use crate::narrow_phase::{NarrowPhase, StepOutcome};
 use crate::sphere_tree::SphereTree;
@@ -42,10 +46,94 @@ pub struct Work<'a> {
     pub calibration: &'a calibration::Calibration,
 }
 
+/// When a scheduler's order needs the frame's prioritisation (see [`priority`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Prioritise {
+    /// Never: the order is blind to gaze.
+    Never,
+    /// When the frame has a fixation: the priorities are perceptual.
+    WithFixation,
+    /// Always: the scheduler needs distances and scales even without a fixation.
+    Always,
+}
+
+/// What a scheduler asks of a frame beyond its own run (see [`Scheduler::passes`]): the passes
+/// the narrow phase runs before it, and what prioritisation computes for it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Passes {
+    /// A wall-clock frame settles every root-separated pair first, in one pass
+    /// (`NarrowPhase::settle_separate_roots`), at about 2 ns a pair against 10-20 ns a step: for a
+    /// scheduler whose own order would take those tests first anyway. The paper's priority
+    /// schedulers rank every pair's first test by priority, and sequential resolution takes each
+    /// pair whole in turn: both orders this would change, so they take the pass only in frames
+    /// that shed their order for round-robin.
+    pub roots_first: bool,
+    /// After the root pass, a wall-clock frame settles the pairs within the fovea first, whole and
+    /// nearest the fixation first, through the gaze rings (see [`rings`]), where the broad phase
+    /// has columns to find them by and the frame can pay for placing them.
+    pub rings_fovea: bool,
+    /// With [`crate::SimConfig::fovea_first`], a wall-clock frame settles the fovea first over
+    /// every candidate.
+    pub fovea_first: bool,
+    /// The order uses gaze: the rings and the fovea passes are for such schedulers only.
+    pub gaze: bool,
+    /// When the frame prioritises for this scheduler.
+    pub prioritise: Prioritise,
+    /// What prioritisation must compute.
+    pub needs: Needs,
+    /// A wall-clock frame orders (prioritises and runs this scheduler) only if the expected cost
+    /// of the ordering is at most this share of the time left; above it, gaze-blind round-robin
+    /// does more good with the same time (see [`crate::budget::gate`]).
+    pub ordering_share: f64,
+    /// The scheduler prices pair states by the tree's calibration (see [`calibration`]); others
+    /// are handed an uninformed one.
+    pub calibrated: bool,
+}
+
+impl Default for Passes {
+    /// A gaze-blind scheduler that asks for no pass and no prioritisation.
+    fn default() -> Self {
+        Self {
+            roots_first: false,
+            rings_fovea: false,
+            fovea_first: false,
+            gaze: false,
+            prioritise: Prioritise::Never,
+            needs: Needs::default(),
+            ordering_share: crate::budget::gate::ORDERING_SHARE,
+            calibrated: false,
+        }
+    }
+}
+
+impl Passes {
+    /// The passes of a scheduler that orders by perceptual priority, which needs `needs`.
+    pub fn perceptual(needs: Needs) -> Self {
+        Self {
+            gaze: true,
+            prioritise: Prioritise::WithFixation,
+            needs,
+            ..Self::default()
+        }
+    }
+
+    /// Whether the frame prioritises, given whether it has a fixation.
+    pub fn prioritises(&self, has_fixation: bool) -> bool {
+        match self.prioritise {
+            Prioritise::Never => false,
+            Prioritise::WithFixation => has_fixation,
+            Prioritise::Always => true,
+        }
+    }
+}
+
 /// A narrow-phase scheduling strategy.
 pub trait Scheduler: std::fmt::Debug + Send {
-    /// Which strategy this is.
-    fn kind(&self) -> SchedulerKind;
+    /// What this scheduler asks of a frame beyond its own run: the passes before it and what
+    /// prioritisation computes (the default asks for nothing).
+    fn passes(&self) -> Passes {
+        Passes::default()
+    }
     /// Step open pairs until none is left or `meter` says stop.
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>);
     /// Clock time the last run spent ordering work before its first step (ns; 0 if it does not
@@ -134,21 +222,15 @@ pub(crate) fn sort_by_priority(pr: &Priorities, queue: &mut [u32]) {
     });
 }
 
-/// What prioritisation must compute for `kind`'s scheduler.
+/// What prioritisation must compute for `kind`'s scheduler (its [`Passes::needs`]).
 pub fn needs(kind: SchedulerKind) -> Needs {
-    Needs {
-        inner: matches!(
-            kind,
-            SchedulerKind::PriorityOnly | SchedulerKind::PrioritySorted
-        ),
-        weight: matches!(
-            kind,
-            SchedulerKind::SortedSequential
-                | SchedulerKind::PrioritySorted
-                | SchedulerKind::ExpectedGain
-        ),
-        bodies_only: kind == SchedulerKind::Priced,
-    }
+    for_kind(kind, PricedOptions::default()).passes().needs
+}
+
+/// The scheduler a wall-clock frame falls back on when it cannot pay for its own ordering:
+/// gaze-blind round-robin.
+pub fn fallback() -> Box<dyn Scheduler> {
+    Box::new(RoundRobin::default())
 }
 
 #[cfg(test)]

@@ -28,54 +28,11 @@
 //! pass that only writes sequential arrays, and the queue holds only pairs put back after a step;
 //! popping takes whichever of the two is higher, so the order is exactly the queue's.
 
-use serde::{Deserialize, Serialize};
-
 use super::calibration::{self, Bin};
-use super::{Scheduler, Work};
+use super::{Needs, Passes, Prioritise, Scheduler, Work};
 use crate::budget::Meter;
-use crate::config::SchedulerKind;
+use crate::config::PricedOptions;
 use crate::narrow_phase::{NarrowPhase, StepOutcome};
-
-/// Ablation switches: which parts of the price are used.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct PricedOptions {
-    /// Weigh by the calibrated expected false-positive gap (off: every pair is assumed a false
-    /// positive with the same gap).
-    pub probability: bool,
-    /// Divide by the calibrated expected tests to settle (off: every pair costs the same).
-    pub cost: bool,
-    /// Weigh by the perceptual fall-off around the fixation (off: gaze-blind).
-    pub gaze: bool,
-}
-
-impl Default for PricedOptions {
-    fn default() -> Self {
-        Self {
-            probability: true,
-            cost: true,
-            gaze: true,
-        }
-    }
-}
-
-impl PricedOptions {
-    /// Short label for tables: `priced`, or `priced-no-probability` and so on.
-    pub fn label(&self) -> String {
-        let mut s = String::from("priced");
-        for (on, name) in [
-            (self.probability, "probability"),
-            (self.cost, "cost"),
-            (self.gaze, "gaze"),
-        ] {
-            if !on {
-                s.push_str("-no-");
-                s.push_str(name);
-            }
-        }
-        s
-    }
-}
 
 /// How far (in quarter octaves) a pair being worked on may fall below the best waiting pair before
 /// it is put back: 1 is a factor of about 1.19 (0, 2 and 4 measured the same under sphere-test
@@ -616,8 +573,30 @@ impl Priced {
 }
 
 impl Scheduler for Priced {
-    fn kind(&self) -> SchedulerKind {
-        SchedulerKind::Priced
+    /// The priced order puts the root-separated pairs first anyway (each the most
+    /// false-positive error removed for one test), so a wall-clock frame settles them in the
+    /// cheaper pass. But it alone leaves the foveal pairs likely to collide for last (deeming a
+    /// true collision removes no false-positive error), and what the viewer looks at is then not
+    /// exact: a wall-clock frame settles the fovea first, through the rings or over every
+    /// candidate. At 10,000 bodies and a 4 ms frame budget this took the frames with every
+    /// foveal pair settled from 1-2% to 100% (docs/BENCHMARKS.md). It needs distances and
+    /// scales even without a fixation, prices pairs itself from per-body values, and its
+    /// ordering buys more per microsecond than the paper's (see
+    /// [`crate::budget::gate::PRICED_ORDERING_SHARE`]).
+    fn passes(&self) -> Passes {
+        Passes {
+            roots_first: true,
+            rings_fovea: true,
+            fovea_first: true,
+            gaze: self.options.gaze,
+            prioritise: Prioritise::Always,
+            needs: Needs {
+                bodies_only: true,
+                ..Needs::default()
+            },
+            ordering_share: crate::budget::gate::PRICED_ORDERING_SHARE,
+            calibrated: true,
+        }
     }
 
     fn ordering_ns(&self) -> u64 {

@@ -5,7 +5,7 @@
 //! each body is projected once per frame (its pixel position, its unit eye ray and its scale in the
 //! model's unit per scene unit), and a pair then costs one projection of its centre, one square root
 //! for the eye ray, one for the centre distance, and a table lookup for the fall-off
-//! ([`Falloff`]). Degrees of visual angle are never computed per pair: a pair is in the priority
+//! (`Falloff`). Degrees of visual angle are never computed per pair: a pair is in the priority
 //! queue's first queue iff the chord between its eye ray and the fixation's is within the chord of
 //! the threshold angle, which is the same test as comparing the angles.
 //!

@@ -3,9 +3,8 @@
 //! touched only once the first is empty. "Priority only" round-robins inside both queues; "priority
 //! sorted" sorts the first queue and resolves it sequentially, leaving the second round-robin.
 
-use super::{Scheduler, Work, round_robin, sequential, sort_by_priority};
+use super::{Needs, Passes, Scheduler, Work, round_robin, sequential, sort_by_priority};
 use crate::budget::Meter;
-use crate::config::SchedulerKind;
 use crate::narrow_phase::NarrowPhase;
 
 /// Two-queue scheduler.
@@ -28,12 +27,12 @@ impl PriorityQueue {
 }
 
 impl Scheduler for PriorityQueue {
-    fn kind(&self) -> SchedulerKind {
-        if self.sorted {
-            SchedulerKind::PrioritySorted
-        } else {
-            SchedulerKind::PriorityOnly
-        }
+    fn passes(&self) -> Passes {
+        Passes::perceptual(Needs {
+            inner: true,
+            weight: self.sorted,
+            ..Needs::default()
+        })
     }
 
     fn run(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {

@@ -1,9 +1,8 @@
 //! Round-robin scheduling (paper section 2, after Hubbard [14]): every active pair descends one level
 //! per round, so under interruption all pairs end at about the same depth and no perception is used.
 
-use super::{Scheduler, Work, round_robin};
+use super::{Passes, Scheduler, Work, round_robin};
 use crate::budget::Meter;
-use crate::config::SchedulerKind;
 use crate::narrow_phase::NarrowPhase;
 
 /// Round-robin over the whole candidate list.
@@ -13,8 +12,13 @@ pub struct RoundRobin {
 }
 
 impl Scheduler for RoundRobin {
-    fn kind(&self) -> SchedulerKind {
-        SchedulerKind::RoundRobin
+    /// Its first round is the root pass's tests in the same order (less the pairs with a
+    /// witness, stepped in the round), so a wall-clock frame takes the cheaper pass first.
+    fn passes(&self) -> Passes {
+        Passes {
+            roots_first: true,
+            ..Passes::default()
+        }
     }
 
     fn warm(&self) {

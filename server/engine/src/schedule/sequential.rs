@@ -2,9 +2,8 @@
 //! it is the paper's *perceptually sorted sequential* scheduling: the list is first sorted by
 //! perceptual priority, so the collisions that matter most are resolved while there is time.
 
-use super::{Scheduler, Work, sequential, sort_by_priority};
+use super::{Needs, Passes, Scheduler, Work, sequential, sort_by_priority};
 use crate::budget::Meter;
-use crate::config::SchedulerKind;
 use crate::narrow_phase::NarrowPhase;
 
 /// Sequential, optionally sorted by priority.
@@ -25,11 +24,14 @@ impl Sequential {
 }
 
 impl Scheduler for Sequential {
-    fn kind(&self) -> SchedulerKind {
+    fn passes(&self) -> Passes {
         if self.sorted {
-            SchedulerKind::SortedSequential
+            Passes::perceptual(Needs {
+                weight: true,
+                ..Needs::default()
+            })
         } else {
-            SchedulerKind::Sequential
+            Passes::default()
         }
     }
 

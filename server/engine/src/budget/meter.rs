@@ -1,26 +1,11 @@
 //! The narrow phase's budget (paper section 2: "the application indicates that it wishes to
 //! interrupt collision processing").
 //!
-//! Time enters the engine only here, through a [`Clock`] the caller hands in; the engine never reads
-//! a wall clock itself. Besides the paper's wall-clock budget there is a deterministic budget counted
+//! Time enters the engine only through a [`Clock`] the caller hands in (see `crate::clock`); the
+//! engine never reads a wall clock itself. Besides the paper's wall-clock budget there is a deterministic budget counted
 //! in sphere tests, so that a run replays bit for bit on any machine.
 
-/// A monotonic clock supplied by the caller. It is `Sync` because a frame on several threads runs
-/// on the simulation's thread pool, which reads it from there.
-pub trait Clock: Sync {
-    /// Nanoseconds since an arbitrary fixed origin; never decreases.
-    fn now_ns(&self) -> u64;
-}
-
-/// A clock that never advances: for deterministic runs where time is not measured.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct FrozenClock;
-
-impl Clock for FrozenClock {
-    fn now_ns(&self) -> u64 {
-        0
-    }
-}
+use crate::clock::Clock;
 
 /// A budget resolved for one frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -194,34 +179,10 @@ impl<'c> Meter<'c> {
     }
 }
 
-/// A clock for tests that advances `.1` nanoseconds at every reading (`.0` holds the last one),
-/// so a frame's timing depends only on how often it reads the clock.
-#[cfg(test)]
-pub(crate) struct Ticking(pub std::sync::atomic::AtomicU64, pub u64);
-
-#[cfg(test)]
-impl Clock for Ticking {
-    fn now_ns(&self) -> u64 {
-        self.0
-            .fetch_add(self.1, std::sync::atomic::Ordering::Relaxed)
-            + self.1
-    }
-}
-
-/// A clock for tests that reads whatever `.0` was last set to.
-#[cfg(test)]
-pub(crate) struct Manual(pub std::sync::atomic::AtomicU64);
-
-#[cfg(test)]
-impl Clock for Manual {
-    fn now_ns(&self) -> u64 {
-        self.0.load(std::sync::atomic::Ordering::Relaxed)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::clock::{FrozenClock, Manual};
     use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
     #[test]

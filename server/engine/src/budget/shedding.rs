@@ -274,7 +274,7 @@ impl Shedder {
     }
 
     /// The foveal pass of a frame with `foveal_pairs` foveal pairs settled `settled` of them in
-    /// `ns` (see [`crate::collider::Collider::collide_foveal_first`]).
+    /// `ns` (see [`crate::collider::Collider::collide_frame`]).
     ///
     /// The count is smoothed (a fifth of the new value each frame): a frame whose foveal regions
     /// were not all searched counts fewer foveal pairs than there are and must not shrink the
