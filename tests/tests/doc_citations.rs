@@ -6,21 +6,24 @@
 //! written sends the reader nowhere, so this test reads the repository's sources and documents and
 //! checks each one:
 //!
-//! - a section citation, a document's name then a heading in double quotes (a comma may follow
-//!   the name; the quoted heading may wrap onto the next comment line), names a file that
-//!   exists and a heading of it whose text,
+//! - a section citation, a document's name (bare or in backticks) then a heading in double
+//!   quotes (a comma, and the word `section` or a `§`, may come between; the quoted heading may
+//!   wrap onto the next comment line), names a file that exists and a heading of it whose text,
 //!   after the leading `#`s, is the quoted text (ignoring case and runs of white space), either
 //!   whole or without a trailing parenthetical (`Recorded sessions` cites `## Recorded sessions
 //!   (`--record FILE`)`). A bare name (`DESIGN.md`) is the file of that name in `docs/`, else
 //!   beside the citing file, else at the top of the repository;
+//! - a numbered section citation, a document's name then `§N` or `section N` (`N.M` for the M-th
+//!   subsection of the N-th), names a file with that many `##` sections (and `###` under it);
 //! - a path into `docs/` ending in `.md`, named anywhere, is a file, from the top of the
 //!   repository; so is a bare upper-case name such as `BENCHMARKS.md`;
 //! - a Markdown link to a `.md` file, relative to the linking file, is a file, and its `#anchor`
 //!   (or an in-page `#anchor`) is the anchor of one of its headings.
 //!
-//! Sources are the `*.rs`, `*.ts` and `*.md` files outside build output, dependencies and
-//! generated code. Separately, no file of the repository points at a directory beside the
-//! checkout: everything the project needs ships in it.
+//! Sources are the Rust, TypeScript and JavaScript (`*.mjs`), Markdown, protobuf, TOML and shell
+//! files (`*.sh`, `*.sbatch`, and scripts without an ending that start with `#!`) outside build
+//! output, dependencies and generated code. Separately, no file of the repository points outside
+//! it: not at a directory beside the checkout, nor by a relative path that climbs above the top.
 
 use std::collections::HashMap;
 use std::fs;
@@ -50,7 +53,19 @@ const SKIP_ALWAYS: [&str; 4] = [
 const SKIP_FOR_CITATIONS: [&str; 2] = ["web/dist", "web/src/gen"];
 
 /// File endings read for citations.
-const CITING: [&str; 3] = ["rs", "ts", "md"];
+const CITING: [&str; 8] = ["rs", "ts", "mjs", "md", "proto", "toml", "sh", "sbatch"];
+
+/// Whether the file at `rel` (from the top) is read for citations: one of the [`CITING`]
+/// endings, or a script without an ending (`.ci/run`).
+fn is_citing(root: &Path, rel: &Path) -> bool {
+    if SKIP_FOR_CITATIONS.iter().any(|s| rel.starts_with(s)) {
+        return false;
+    }
+    match rel.extension() {
+        Some(e) => CITING.iter().any(|c| e == *c),
+        None => fs::read(root.join(rel)).is_ok_and(|b| b.starts_with(b"#!")),
+    }
+}
 
 /// Every file under `dir`, as paths relative to `root`, skipping [`SKIP_NAMES`] and
 /// [`SKIP_ALWAYS`].
@@ -85,8 +100,16 @@ fn files() -> Vec<PathBuf> {
     out
 }
 
-/// One heading of a Markdown document: its text after the `#`s.
+/// The headings of a Markdown document: their text after the `#`s.
 fn headings(markdown: &str) -> Vec<String> {
+    leveled_headings(markdown)
+        .into_iter()
+        .map(|(_, text)| text)
+        .collect()
+}
+
+/// The headings of a Markdown document: each one's level (its number of `#`s) and text.
+fn leveled_headings(markdown: &str) -> Vec<(usize, String)> {
     let mut out = Vec::new();
     let mut fence: Option<&str> = None;
     for line in markdown.lines() {
@@ -108,10 +131,46 @@ fn headings(markdown: &str) -> Vec<String> {
         let hashes = t.bytes().take_while(|&b| b == b'#').count();
         if (1..=6).contains(&hashes) && t[hashes..].starts_with([' ', '\t']) {
             let text = t[hashes..].trim().trim_end_matches('#').trim_end();
-            out.push(text.to_string());
+            out.push((hashes, text.to_string()));
         }
     }
     out
+}
+
+/// Whether `markdown` has section `number`: `N`, the N-th `##` heading, or `N.M`, the M-th `###`
+/// heading after it (before the next `##`), counting from 1.
+fn has_numbered_section(markdown: &str, number: &str) -> bool {
+    let parts: Vec<usize> = number.split('.').map_while(|p| p.parse().ok()).collect();
+    let (Some(&n), rest) = (parts.first(), parts.get(1..).unwrap_or_default()) else {
+        return false;
+    };
+    if n == 0 || rest.len() > 1 || rest.first() == Some(&0) {
+        return false;
+    }
+    let levels: Vec<usize> = leveled_headings(markdown)
+        .into_iter()
+        .map(|(level, _)| level)
+        .collect();
+    let Some(at) = levels
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| **l == 2)
+        .nth(n - 1)
+        .map(|(i, _)| i)
+    else {
+        return false;
+    };
+    match rest.first() {
+        None => true,
+        Some(&m) => {
+            levels[at + 1..]
+                .iter()
+                .take_while(|l| **l > 2)
+                .filter(|l| **l == 3)
+                .count()
+                >= m
+        }
+    }
 }
 
 /// Lower case, runs of white space as one space.
@@ -272,21 +331,41 @@ fn problems_in(root: &Path, rel: &Path, text: &str) -> Vec<String> {
         let in_link = before == Some('(') && text[..start].ends_with("](");
         let is_docs_path = name.starts_with("docs/");
         let mut pos = end;
+        if before == Some('`') && text[pos..].starts_with('`') {
+            pos += 1;
+        }
         if text[pos..].starts_with(',') {
             pos += 1;
         }
-        let (pos, spaced) = skip_gap(text, pos);
-        let cited = (spaced && text[pos..].starts_with('"'))
+        let (mut pos, mut spaced) = skip_gap(text, pos);
+        // `section "Heading"`, `§ "Heading"`, `section 3`, `§3.2`.
+        let mut number = None;
+        for word in ["section", "§"] {
+            if spaced && text[pos..].starts_with(word) {
+                let (after, gap) = skip_gap(text, pos + word.len());
+                let digits = text[after..]
+                    .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+                    .map_or(text.len() - after, |n| n);
+                let n = text[after..after + digits].trim_end_matches('.');
+                if !n.is_empty() && n.starts_with(|c: char| c.is_ascii_digit()) {
+                    number = Some(n.to_string());
+                } else if gap && text[after..].starts_with('"') {
+                    (pos, spaced) = (after, true);
+                }
+                break;
+            }
+        }
+        let cited = (number.is_none() && spaced && text[pos..].starts_with('"'))
             .then(|| quoted(text, pos))
             .flatten();
         let is_reference_doc = !name.contains('/')
             && name[..name.len() - 3]
                 .chars()
                 .all(|c| c.is_ascii_uppercase() || c == '_');
-        if cited.is_none() && !is_docs_path && !is_reference_doc {
+        if cited.is_none() && number.is_none() && !is_docs_path && !is_reference_doc {
             continue;
         }
-        if in_link && cited.is_none() {
+        if in_link && cited.is_none() && number.is_none() {
             continue;
         }
         let Some(path) = resolve_named(root, rel, name) else {
@@ -301,6 +380,11 @@ fn problems_in(root: &Path, rel: &Path, text: &str) -> Vec<String> {
                     here(start)
                 ));
             }
+        }
+        if let Some(number) = number
+            && !has_numbered_section(&read(&path), &number)
+        {
+            out.push(format!("{}: `{name}` has no section {number}", here(start)));
         }
     }
 
@@ -360,11 +444,7 @@ fn every_cited_document_and_section_exists() {
     let mut problems = Vec::new();
     let mut citing = 0;
     for rel in files() {
-        if SKIP_FOR_CITATIONS.iter().any(|s| rel.starts_with(s))
-            || !rel
-                .extension()
-                .is_some_and(|e| CITING.iter().any(|c| e == *c))
-        {
+        if !is_citing(&root, &rel) {
             continue;
         }
         let text = fs::read_to_string(root.join(&rel))
@@ -393,11 +473,17 @@ fn a_bogus_citation_is_caught() {
     assert_eq!(problems_in(&root, rel, ok), Vec::<String>::new());
     // Built here, so that this file does not name a missing document itself.
     let nowhere = format!("/// See docs/{}.md for more.\n", "NOWHERE");
+    let also_ok = "// `docs/DESIGN.md` \"Scene\", DESIGN.md section \"Shape\", DESIGN.md §1, DESIGN.md section 2.\n";
+    assert_eq!(problems_in(&root, rel, also_ok), Vec::<String>::new());
     for bad in [
         "//! DESIGN.md \"No such section\"\n",
         "//! docs/DESIGN.md \"Sphere\"\n",
         nowhere.as_str(),
         "/// PROTOCOL.md \"Limits of the universe\"\n",
+        "// see `docs/DESIGN.md` \"No such section\"\n",
+        "// DESIGN.md section \"No such section\"\n",
+        concat!("// DESIGN.md §", "99\n"),
+        concat!("// BENCHMARKS.md sec", "tion 1.99\n"),
     ] {
         let found = problems_in(&root, rel, bad);
         assert_eq!(found.len(), 1, "{bad:?}: {found:?}");
@@ -408,6 +494,27 @@ fn a_bogus_citation_is_caught() {
         "[a](PROTOCOL.md#limits), [b](#nowhere), [c](BENCHMARKS.md#no-such-anchor), [d](GONE.md)\n";
     let found = problems_in(&root, &md, links);
     assert_eq!(found.len(), 3, "{found:?}");
+    // Scripts and web tests are read too: a shell script without an ending, an `.mjs` test.
+    assert!(is_citing(&root, Path::new(".ci/run")));
+    assert!(is_citing(&root, Path::new("web/test/contact.test.mjs")));
+    assert!(!is_citing(&root, Path::new("web/dist/index.html")));
+    let script = "#!/bin/sh\n# the figures: DESIGN.md \"No such section\"\n";
+    assert_eq!(
+        problems_in(&root, Path::new("deploy/x.sh"), script).len(),
+        1
+    );
+}
+
+#[test]
+fn numbered_sections_count_headings() {
+    let doc = "# T\n## A\n### A1\n### A2\n## B\n```\n## not a heading\n```\n";
+    assert!(has_numbered_section(doc, "1"));
+    assert!(has_numbered_section(doc, "2"));
+    assert!(!has_numbered_section(doc, "3"));
+    assert!(has_numbered_section(doc, "1.2"));
+    assert!(!has_numbered_section(doc, "1.3"));
+    assert!(!has_numbered_section(doc, "2.1"));
+    assert!(!has_numbered_section(doc, "0"));
 }
 
 #[test]
@@ -426,21 +533,88 @@ fn headings_are_matched_as_documented() {
     assert_eq!(anchors(doc), ["t", "the-study-a-b", "again", "again-1"]);
 }
 
-/// Nothing points at a directory beside the checkout: a user's clone has only the repository.
+/// The relative paths in `text` (of the file at `rel`) that climb above the top of the
+/// repository: a run of `../` starting a path, resolved from the file's directory.
+fn paths_outside(rel: &Path, text: &str) -> Vec<String> {
+    let depth = rel.components().count().saturating_sub(1);
+    let mut out = Vec::new();
+    let mut search = 0;
+    while let Some(found) = text[search..].find("../") {
+        let start = search + found;
+        search = start + 3;
+        if text[..start].chars().next_back().is_some_and(is_path_char) {
+            continue;
+        }
+        let end = text[start..]
+            .find(|c: char| !is_path_char(c))
+            .map_or(text.len(), |n| start + n);
+        let path = &text[start..end];
+        search = end.max(search);
+        // Walk the path's components from the file's directory; climbing past the top is out.
+        let mut level = depth as isize;
+        let mut escapes = false;
+        for part in path.split('/') {
+            match part {
+                ".." => level -= 1,
+                "" | "." => {}
+                _ => level += 1,
+            }
+            escapes |= level < 0;
+        }
+        if escapes {
+            out.push(path.to_string());
+        }
+    }
+    out
+}
+
+/// Nothing points outside the repository: a user's clone has only the repository, so no file
+/// names a directory beside the checkout or a relative path that climbs above the top.
 #[test]
 fn nothing_points_outside_the_repository() {
     let root = root();
     let needle = concat!("..", "/shared").as_bytes();
-    let offending: Vec<String> = files()
-        .into_iter()
-        .filter(|rel| {
-            let bytes = fs::read(root.join(rel)).unwrap_or_default();
-            bytes.windows(needle.len()).any(|w| w == needle)
-        })
-        .map(|rel| rel.display().to_string())
-        .collect();
+    let mut offending = Vec::new();
+    for rel in files() {
+        let bytes = fs::read(root.join(&rel)).unwrap_or_default();
+        if bytes.windows(needle.len()).any(|w| w == needle) {
+            offending.push(format!(
+                "{}: names a directory beside the checkout",
+                rel.display()
+            ));
+        }
+        if let Ok(text) = std::str::from_utf8(&bytes) {
+            for path in paths_outside(&rel, text) {
+                offending.push(format!("{}: `{path}` climbs above the top", rel.display()));
+            }
+        }
+    }
     assert!(
         offending.is_empty(),
-        "these files name a directory outside the repository: {offending:?}"
+        "files pointing outside the repository:\n{}",
+        offending.join("\n")
     );
+}
+
+#[test]
+fn a_path_above_the_top_is_caught() {
+    let at = |rel: &str, text: &str| paths_outside(Path::new(rel), text);
+    assert_eq!(
+        at(
+            "guide/notebook/a.md",
+            "[b](../BENCHMARKS.md), ../../README.md"
+        ),
+        Vec::<String>::new()
+    );
+    assert_eq!(
+        at("server/engine/Cargo.toml", "path = \"../../proto\""),
+        Vec::<String>::new()
+    );
+    assert_eq!(
+        at("guide/a.md", "see ../../elsewhere/data"),
+        ["../../elsewhere/data"]
+    );
+    assert_eq!(at("README.md", "cd ../sibling && make"), ["../sibling"]);
+    let climbing = concat!("../x/../../", "../y");
+    assert_eq!(at("a/b/c.rs", climbing), [climbing]);
 }
