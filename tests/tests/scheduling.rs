@@ -160,10 +160,19 @@ async fn wall_clock_budget_holds() {
         "budget {BUDGET_MS} ms: median overshoot {median_over_ms:.3} ms, exhausted in {exhausted}/{FRAMES} frames, Δ and P sampled in {sampled}, starved {starved}"
     );
     assert!(exhausted > 0, "the budget must bind at this N");
+    // Under a heavy load from elsewhere every one of 30 frames can be preempted past its narrow
+    // deadline; a budget that does not cover the fixed work starves every frame however long
+    // we watch, so watch up to twice as many more frames for one that is not starved.
+    let mut watched = FRAMES;
+    while starved == watched && watched < 3 * FRAMES {
+        let m = next_frame(&mut frames).await.metrics.expect("metrics");
+        starved += usize::from(m.budget_spent_before_narrow);
+        watched += 1;
+    }
     assert!(
-        starved < FRAMES,
-        "{BUDGET_MS} ms must cover this scene's fixed work: every frame spent it before the \
-         narrow phase"
+        starved < watched,
+        "{BUDGET_MS} ms must cover this scene's fixed work: all {watched} frames spent it before \
+         the narrow phase"
     );
     // Generous: the machine running the suite is shared; the overshoot is a few µs unloaded.
     // Tight enough to fail if response and metrics (about 0.4 ms here) ran past the deadline.

@@ -42,7 +42,7 @@ pub enum BenchError {
     },
     /// A sharded run or a merge failed (the shard, the partial and the cells are named).
     #[error(transparent)]
-    Shard(#[from] crate::shard::ShardError),
+    Shard(#[from] crate::shard_error::ShardError),
     /// The study configuration is unusable.
     #[error("invalid study: {0}")]
     Invalid(String),

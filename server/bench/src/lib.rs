@@ -20,8 +20,10 @@
 //!   branch and bound over patches of their surfaces (shared with the engine's tests by path).
 //! - [`shard`]: a protocol's cells split over a cluster's workers, their partial results, and
 //!   the merge that writes what one machine would have.
+//! - [`shard_error`]: what can stop a sharded run or a merge, and a partial file's names.
 //! - [`gaze`]: the seeded fixation/saccade script and the recorded-trace reader.
 //! - [`runner`]: one run, the plan, per-frame CSV records; [`clock`]: the `Instant` clock.
+//! - [`frames`]: exact frames of the paper scene and nothing else, the run a profiler wraps.
 //! - [`stats`]: per-run mean/sd, mean and 95% CI across seeds.
 //! - [`error`]: [`BenchError`], what can stop a bench command.
 //! - [`report`]: grouping, paired ratios, summary CSVs and markdown tables.
@@ -44,6 +46,7 @@ pub mod clock;
 pub mod contact;
 pub mod error;
 pub mod figures;
+pub mod frames;
 pub mod gaze;
 pub mod open_loop;
 pub mod plots;
@@ -55,6 +58,7 @@ pub mod session;
 pub mod shape_check;
 pub mod shape_oracle;
 pub mod shard;
+pub mod shard_error;
 pub mod stats;
 pub mod stress;
 

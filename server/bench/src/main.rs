@@ -57,6 +57,43 @@ enum Command {
     /// machine would have written. Refuses partials of different protocols or engine sources,
     /// and names the cells missing or run twice.
     Merge(MergeArgs),
+    /// Step exact frames of the paper scene and print the last frame's counts: the run a
+    /// profiler wraps (a steady frame's instructions are the difference of two such runs of
+    /// different lengths over the frames between them).
+    Frames(FramesArgs),
+}
+
+#[derive(Debug, Args)]
+struct FramesArgs {
+    /// Bodies.
+    #[arg(short = 'n', long, default_value_t = 2_000)]
+    n: u32,
+    /// The scene's seed.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Exact frames to step.
+    #[arg(long, default_value_t = 80)]
+    frames: u32,
+    /// What "colliding" means: `shape` (the default) or `leaf-spheres`.
+    #[arg(long, default_value = "shape")]
+    truth: foveal_engine::Truth,
+    /// Narrow-phase threads.
+    #[arg(long, default_value_t = 1)]
+    threads: u32,
+}
+
+fn frames(args: &FramesArgs) -> Result<()> {
+    use foveal_bench::frames as fr;
+    let cfg = fr::FramesConfig {
+        n: args.n,
+        seed: args.seed,
+        frames: args.frames,
+        truth: args.truth,
+        threads: args.threads,
+    };
+    let summary = fr::run(&cfg)?;
+    println!("{}", fr::line(&cfg, &summary));
+    Ok(())
 }
 
 #[derive(Debug, Args)]
@@ -945,6 +982,7 @@ fn main() -> Result<()> {
         Command::ShapeCheck(args) => shape_check(args),
         Command::Replay(args) => replay(&args.file, &args.options),
         Command::Merge(args) => merge(args),
+        Command::Frames(args) => frames(args),
     }
 }
 
