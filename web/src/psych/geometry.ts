@@ -64,8 +64,6 @@ export interface Layout {
   radii: [number, number];
   /** The distance between the facing edges. */
   gapCm: number;
-  /** How far the farthest disc edge lies from the fixation. */
-  reachCm: number;
 }
 
 /**
@@ -81,8 +79,7 @@ export function layout(eccDeg: number, dirDeg: number, gapDeg: number, diameterD
   const centres: [Point, Point] = [along(p, back, half + diameterDeg / 2, distanceCm), along(p, u, half + diameterDeg / 2, distanceCm)];
   const dist = (a: Point, b: Point) => Math.hypot(a[0] - b[0], a[1] - b[1]);
   const radii: [number, number] = [dist(centres[0], edges[0]), dist(centres[1], edges[1])];
-  const reachCm = Math.max(Math.hypot(...centres[0]) + radii[0], Math.hypot(...centres[1]) + radii[1]);
-  return { contact: p, centres, radii, gapCm: dist(edges[0], edges[1]), reachCm };
+  return { contact: p, centres, radii, gapCm: dist(edges[0], edges[1]) };
 }
 
 /** CSS pixels per centimetre a display of these dimensions has, at this device pixel ratio. */

@@ -136,15 +136,19 @@ function layoutOf(c: Cell): Layout {
 
 /** Why the design's stimuli do not fit this window, or null. */
 function offScreen(): string | null {
-  const halfCm = Math.min(window.innerWidth, window.innerHeight) / 2 / pxPerCm;
-  let worst = 0;
+  const half = [window.innerWidth / 2 / pxPerCm, window.innerHeight / 2 / pxPerCm];
+  const widest = Math.max(...design.gaps.map((g) => g.gap_deg));
   for (const e of design.eccentricities_deg)
     for (const d of design.directions_deg) {
-      const reach = layout(e, d, Math.max(...design.gaps.map((g) => g.gap_deg)), design.stimulus.disc_diameter_deg, design.stimulus.pair_axis, info.display.viewing_distance_cm).reachCm;
-      worst = Math.max(worst, reach);
+      const l = layout(e, d, widest, design.stimulus.disc_diameter_deg, design.stimulus.pair_axis, info.display.viewing_distance_cm);
+      for (const axis of [0, 1]) {
+        const reach = Math.max(...[0, 1].map((i) => Math.abs(l.centres[i][axis]) + l.radii[i]));
+        if (reach > half[axis]) {
+          return `At ${e} degrees in direction ${d} the discs reach ${reach.toFixed(1)} cm from the fixation cross ${axis === 0 ? "sideways" : "up or down"}, but this window leaves ${half[axis].toFixed(1)} cm: make the window full screen (F11), or use a design with smaller eccentricities.`;
+        }
+      }
     }
-  if (worst <= halfCm) return null;
-  return `The discs reach ${worst.toFixed(1)} cm from the fixation cross, but this window leaves ${halfCm.toFixed(1)} cm: make the window full screen (F11), or use a design with smaller eccentricities.`;
+  return null;
 }
 
 // --- screens ---------------------------------------------------------------------------------
