@@ -229,6 +229,12 @@ mod tests {
         }
         let page = std::str::from_utf8(ASSETS[0].bytes).expect("index.html is UTF-8");
         assert!(page.contains("viewer.js"), "index.html loads viewer.js");
+        let psych = ASSETS
+            .iter()
+            .find(|a| a.path == "/psych")
+            .expect("the psychophysics page is served");
+        let psych = std::str::from_utf8(psych.bytes).expect("psych.html is UTF-8");
+        assert!(psych.contains("psych.js"), "psych.html loads psych.js");
     }
 
     #[test]

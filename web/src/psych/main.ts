@@ -144,7 +144,7 @@ function offScreen(): string | null {
       for (const axis of [0, 1]) {
         const reach = Math.max(...[0, 1].map((i) => Math.abs(l.centres[i][axis]) + l.radii[i]));
         if (reach > half[axis]) {
-          return `At ${e} degrees in direction ${d} the discs reach ${reach.toFixed(1)} cm from the fixation cross ${axis === 0 ? "sideways" : "up or down"}, but this window leaves ${half[axis].toFixed(1)} cm: make the window full screen (F11), or use a design with smaller eccentricities.`;
+          return `At ${e} degrees in direction ${d} the discs reach ${reach.toFixed(1)} cm from the fixation cross ${axis === 0 ? "sideways" : "up or down"}, but this window leaves ${half[axis].toFixed(1)} cm: make the window full screen (F11), run the server with a shorter --viewing-distance-cm and sit that close, or use a design with smaller eccentricities.`;
         }
       }
     }
@@ -244,7 +244,11 @@ async function instructions() {
     <button id="start" type="button">Start</button>`);
   await waitKey([" "], screen.querySelector("#start"));
   try {
-    if (!document.fullscreenElement) await document.documentElement.requestFullscreen();
+    if (!document.fullscreenElement) {
+      await document.documentElement.requestFullscreen();
+      // The window takes its new size over the next frames; the fit check needs it.
+      await sleep(300);
+    }
   } catch {
     // A browser that refuses full screen runs in the window; the fit check below decides.
   }
