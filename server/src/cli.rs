@@ -215,6 +215,14 @@ pub struct Cli {
     /// metrics, scene changes. Replay it with `foveal-bench replay FILE`.
     #[arg(long, env = "FOVEAL_RECORD")]
     pub record: Option<PathBuf>,
+    /// Directory of the `/psych` experiments' results: one CSV per participant and session,
+    /// with a JSON header beside it (created with the first session).
+    #[arg(long, env = "FOVEAL_PSYCH_RESULTS", default_value = crate::psych::DEFAULT_RESULTS_DIR)]
+    pub psych_results: PathBuf,
+    /// Directory of the lab's experiment designs (`NAME.json`, run as `/psych?design=NAME`),
+    /// looked up before the built-in ones (`experiment1`).
+    #[arg(long, env = "FOVEAL_PSYCH_DESIGNS")]
+    pub psych_designs: Option<PathBuf>,
     /// Log filter (`info`, `debug`, `foveal_server=debug,info`, ...).
     #[arg(long, env = "FOVEAL_LOG", default_value = "info")]
     pub log_level: String,
@@ -389,6 +397,10 @@ impl Cli {
                 max_gaze_rate_hz: self.max_gaze_rate,
             },
             record: self.record.clone(),
+            psych: crate::psych::PsychConfig {
+                results_dir: self.psych_results.clone(),
+                designs_dir: self.psych_designs.clone(),
+            },
             connections,
             ..ServerConfig::default()
         };

@@ -50,6 +50,8 @@ pub struct ServerConfig {
     /// Write the session (configuration, every gaze sample the processing received, every
     /// frame's fixation and report, scene changes) to this file (`foveal-session` format).
     pub record: Option<std::path::PathBuf>,
+    /// The `/psych` experiments' results directory and designs.
+    pub psych: crate::psych::PsychConfig,
     /// Health turns NOT_SERVING when no frame has completed for this many frame periods, and back
     /// to SERVING when frames flow again.
     pub stall_periods: u32,
@@ -105,6 +107,7 @@ impl Default for ServerConfig {
             connections: ConnectionLimits::default(),
             stall_periods: DEFAULT_STALL_PERIODS,
             record: None,
+            psych: crate::psych::PsychConfig::default(),
         }
     }
 }

@@ -24,6 +24,8 @@
 //!   summary line, the shutdown signal.
 //! - [`web`]: the browser viewer on the gRPC port: grpc-web and the embedded page; `origin`: the
 //!   `Host` and `Origin` allow-list browsers' requests pass (DNS rebinding).
+//! - [`psych`]: the `/psych` experiments' designs and results (`/psych/api/`), behind the
+//!   viewer layer like the page.
 //! - `transport`: the listener and the connections on hyper: the connection limit, accept
 //!   back-off, timeouts (first byte, request head, idle body, idle connection), TLS with ALPN.
 //!
@@ -55,6 +57,7 @@ mod gaze;
 mod limits;
 mod metrics;
 mod origin;
+pub mod psych;
 mod recorder;
 mod service;
 mod shutdown;
@@ -224,9 +227,19 @@ pub async fn run_with_health(
                 match e {}
             },
         )
-        .layer(web::ViewerLayer::new(origin::Origins::new(
-            config.security.allowed_origins.clone(),
-        )))
+        .layer(web::ViewerLayer::new(
+            origin::Origins::new(config.security.allowed_origins.clone()),
+            psych::Psych::new(
+                psych::store::Store::new(
+                    config.psych.results_dir.clone(),
+                    psych::design::Designs {
+                        dir: config.psych.designs_dir.clone(),
+                    },
+                    config.sim.display,
+                ),
+                config.security.tokens.clone(),
+            ),
+        ))
         .layer(GateLayer(Arc::clone(&gate)))
         .service(routes);
     let (drained_tx, drained_rx) = tokio::sync::oneshot::channel::<()>();

@@ -26,6 +26,7 @@ use tower_layer::Layer;
 use tower_service::Service;
 
 use crate::origin::Origins;
+use crate::psych::Psych;
 use crate::transport::{Every, LOG_EVERY};
 
 /// One embedded file.
@@ -52,6 +53,10 @@ const ASSETS: &[Asset] = &[
     asset!("/index.html", "index.html", "text/html; charset=utf-8"),
     asset!("/viewer.js", "viewer.js", "text/javascript; charset=utf-8"),
     asset!("/viewer.css", "viewer.css", "text/css; charset=utf-8"),
+    // The psychophysics experiments (`crate::psych`).
+    asset!("/psych", "psych.html", "text/html; charset=utf-8"),
+    asset!("/psych.js", "psych.js", "text/javascript; charset=utf-8"),
+    asset!("/psych.css", "psych.css", "text/css; charset=utf-8"),
 ];
 
 /// The layer that puts the viewer (page and grpc-web) in front of the gRPC services, behind
@@ -60,14 +65,17 @@ const ASSETS: &[Asset] = &[
 pub struct ViewerLayer {
     origins: Arc<Origins>,
     refusals: Arc<Every>,
+    psych: Arc<Psych>,
 }
 
 impl ViewerLayer {
-    /// The viewer, answering browsers allowed by `origins`.
-    pub fn new(origins: Origins) -> Self {
+    /// The viewer, answering browsers allowed by `origins`, and the experiments' results
+    /// endpoint `psych`.
+    pub fn new(origins: Origins, psych: Arc<Psych>) -> Self {
         Self {
             origins: Arc::new(origins),
             refusals: Arc::new(Every::new(LOG_EVERY)),
+            psych,
         }
     }
 }
@@ -80,6 +88,7 @@ impl<S> Layer<S> for ViewerLayer {
             inner: GrpcWebLayer::new().layer(inner),
             origins: Arc::clone(&self.origins),
             refusals: Arc::clone(&self.refusals),
+            psych: Arc::clone(&self.psych),
         }
     }
 }
@@ -90,6 +99,7 @@ pub struct ViewerService<S> {
     inner: GrpcWebService<S>,
     origins: Arc<Origins>,
     refusals: Arc<Every>,
+    psych: Arc<Psych>,
 }
 
 type BoxFuture<T, E> = Pin<Box<dyn Future<Output = Result<T, E>> + Send>>;
@@ -99,6 +109,8 @@ where
     GrpcWebService<S>: Service<Request<B>, Response = Response<Body>>,
     <GrpcWebService<S> as Service<Request<B>>>::Future: Send + 'static,
     <GrpcWebService<S> as Service<Request<B>>>::Error: Send + 'static,
+    B: http_body::Body<Data = hyper::body::Bytes> + Send + Unpin + 'static,
+    B::Error: Into<Box<dyn std::error::Error + Send + Sync>>,
 {
     type Response = Response<Body>;
     type Error = <GrpcWebService<S> as Service<Request<B>>>::Error;
@@ -119,6 +131,11 @@ where
                 tracing::info!(?peer, refused_since_last_line = held, reason = %why, "browser request refused");
             }
             return Box::pin(std::future::ready(Ok(refusal(&request, why))));
+        }
+        // Behind the browsers' allow-list like the page; its own role check (see `psych`).
+        if request.uri().path().starts_with(crate::psych::http::PREFIX) {
+            let psych = Arc::clone(&self.psych);
+            return Box::pin(async move { Ok(psych.handle(request).await) });
         }
         if is_page_request(&request) {
             let response = asset_response(request.method(), request.uri().path());
@@ -212,6 +229,12 @@ mod tests {
         }
         let page = std::str::from_utf8(ASSETS[0].bytes).expect("index.html is UTF-8");
         assert!(page.contains("viewer.js"), "index.html loads viewer.js");
+        let psych = ASSETS
+            .iter()
+            .find(|a| a.path == "/psych")
+            .expect("the psychophysics page is served");
+        let psych = std::str::from_utf8(psych.bytes).expect("psych.html is UTF-8");
+        assert!(psych.contains("psych.js"), "psych.html loads psych.js");
     }
 
     #[test]

@@ -18,6 +18,8 @@
 //! - `tests/record_replay.rs`: a session recorded with `--record` replays bit for bit.
 //! - `tests/security.rs`: roles, TLS, loopback-only without tokens; `tests/limits.rs`: scene
 //!   cost, oversize messages, gaze rate limit, honest health, shutdown with stalled subscribers.
+//! - `tests/psych_results.rs`: the `/psych` results endpoint: trials appended and read back by
+//!   `foveal psych fit`'s reader, malformed ones refused by field, the writer's role.
 //! - `tests/doc_citations.rs`: every document and section the code and docs cite exists, and
 //!   nothing points outside the repository (no server involved).
 
