@@ -111,6 +111,13 @@ pub struct Cli {
     /// Compute the exact answer for every deemed pair (true false positives, true Δ and P).
     #[arg(long, env = "FOVEAL_AUDIT")]
     pub audit: bool,
+    /// The side by side: also settle every frame with a gaze-blind collider (`round-robin` under
+    /// the same budget, or `exact`) and send its metrics and collisions beside the frame's
+    /// (`off`, `round-robin`, `exact`), with both sides' true error measured on the same pairs.
+    /// Refused above 20,000 bodies, where the second collider no longer fits the frame period
+    /// (docs/BENCHMARKS.md).
+    #[arg(long, env = "FOVEAL_COMPARE", default_value = "off", value_parser = crate::compare::Compare::parse)]
+    pub compare: crate::compare::Compare,
     /// Under a wall-clock budget, settle every pair within 5 degrees of the fixation before any
     /// other (priced scheduler), over every candidate and before anything else. Without it the
     /// priced scheduler already does so through the gaze rings where sweep and prune locates
@@ -390,6 +397,7 @@ impl Cli {
             },
             record: self.record.clone(),
             connections,
+            compare: self.compare,
             ..ServerConfig::default()
         };
         config.validate()?;
