@@ -1,7 +1,7 @@
-//! The side by side (`SceneConfig.compare`) over real sockets: Configure turns it on (and the audit
-//! with it), every frame then carries a gaze-blind collider's run on the same frame under the same
-//! budget with its own collision list and true P, the gaze-steered side leaves less true P about
-//! the fixation, turning it off removes it, and it is refused above its body limit, naming the
+//! The side by side (`SceneConfig.compare`) over real sockets: Configure turns it on, every frame
+//! then carries a gaze-blind collider's run on the same frame under the same budget with its own
+//! collision list and both sides' true P on the same pairs, the gaze-steered side leaves less true
+//! P about the fixation, turning it off removes it, and it is refused above its body limit, naming the
 //! field and the limit, with nothing changed.
 
 use std::time::Duration;
@@ -67,7 +67,7 @@ async fn both_colliders_settle_the_same_frame_and_the_gaze_side_leaves_less_true
         .expect("compare on");
     let applied = on.applied.expect("applied");
     assert_eq!(applied.compare, pb::Compare::RoundRobin as i32);
-    assert!(applied.audit, "the side by side turns the audit on");
+    assert!(!applied.audit, "the side by side audits both sides itself");
     let scene = client
         .get_scene(pb::GetSceneRequest {})
         .await
@@ -109,11 +109,20 @@ async fn both_colliders_settle_the_same_frame_and_the_gaze_side_leaves_less_true
         assert_eq!(count(&cc.deemed), cm.deemed_at_interruption);
         let mc = f.collisions.expect("main collisions");
         assert_eq!(count(&mc.deemed), m.deemed_at_interruption);
-        gaze_p += m.audit.expect("audit").true_perceived_inaccuracy;
-        blind_p += cm
-            .audit
-            .expect("comparison audit")
-            .true_perceived_inaccuracy;
+        assert!(m.audit.is_none(), "the frame's own audit stays off");
+        assert!(c.audit_stride >= 1);
+        let (main_audit, blind_audit) = (
+            c.main_audit.expect("the gaze side's audit"),
+            cm.audit.expect("the gaze-blind side's audit"),
+        );
+        // The paired audit settles only pairs a side deemed (one in audit_stride of them, each
+        // counted audit_stride times).
+        assert!(
+            blind_audit.true_false_positives
+                <= u64::from(c.audit_stride) * cm.deemed_at_interruption
+        );
+        gaze_p += main_audit.true_perceived_inaccuracy;
+        blind_p += blind_audit.true_perceived_inaccuracy;
         seen += 1;
     }
     assert!(
