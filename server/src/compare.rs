@@ -139,6 +139,10 @@ impl Compare {
 /// sides), scaled by its stride.
 pub const MAX_AUDITED_PAIRS: usize = 1_000;
 
+/// A pair's exact answer: None if it collides, else its true gap and the perceived error of it
+/// ([`true_weight`]).
+type Truth = Option<(f64, f64)>;
+
 /// Both sides' true error on one frame, over the same sample of the pairs either side deemed.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct PairedAudit {
@@ -265,12 +269,12 @@ impl Comparison {
                 continue;
             }
             seen += 1;
-            if (seen - 1) % stride != 0 {
+            if !(seen - 1).is_multiple_of(stride) {
                 continue;
             }
             // The two lists hold the same candidates in the same order; settle a pair once
             // when both name it.
-            let mut truth: Option<((u32, u32), Option<(f64, f64)>)> = None;
+            let mut truth: Option<((u32, u32), Truth)> = None;
             for (side, p) in sides.into_iter().enumerate() {
                 let Some(p) = p.filter(|p| p.status == PairStatus::Deemed) else {
                     continue;

@@ -372,12 +372,12 @@ fn run(
         let used = convert::fixation_used(report, &resolved);
         let mut frame = convert::frame_to_pb(report, offset + report.index, &used);
         summary.record(report, step);
-        let compared = comparison.as_mut().map(|c| {
+        if let Some(c) = comparison.as_mut() {
             let out = c.run(sim, report, &clock);
             summary.record_comparison(&out.audit, out.run_ns);
             frame.comparison = Some(convert::comparison_to_pb(c.kind(), &out));
-            c
-        });
+        }
+        let compared = comparison.as_ref();
         if let Some(rec) = &shared.recorder {
             let t_s = shared.fixation.seconds(start);
             rec.frame(offset + report.index, t_s, &resolved, report);
