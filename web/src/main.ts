@@ -219,9 +219,10 @@ function showBlind(f: Frame, bodies: number): void {
   v.commit();
 }
 
-/** Mean of the last `n` values of a side's true P. */
-function recentMean(side: "gaze" | "blind", n: number): number {
-  const s = split.frames.slice(-n);
+/** Mean of a side's true P over the frames of the last `frames` frame indices (120: 2 s at 60 Hz). */
+function recentMean(side: "gaze" | "blind", frames: number): number {
+  const last = split.frames[split.frames.length - 1];
+  const s = last ? split.frames.filter((f) => f.index > last.index - frames) : [];
   return s.length ? s.reduce((a, f) => a + f[side], 0) / s.length : NaN;
 }
 
