@@ -23,14 +23,14 @@ use crate::limits::{self, Limits};
 use crate::origin::AllowedOrigin;
 use crate::transport::{self, ConnectionLimits};
 
-/// Bodies of the scene the server starts with. With [`DEFAULT_BUDGET`] the point of foveal shows at
-/// once: about a third of the candidate pairs are deemed each frame, so P is visible and moves with
-/// the gaze, while a frame's step stays well inside the 60 Hz period (docs/BENCHMARKS.md).
+/// Bodies of the scene the server starts with: enough that an exact frame (11-20 ms on a loaded
+/// 2-core machine) does not fit [`DEFAULT_BUDGET`], so the budget is needed, and few enough that
+/// the side by side (`--compare`) holds 60 fps beside it (docs/BENCHMARKS.md "Side by side").
 pub const DEFAULT_BODIES: u32 = 5000;
 
-/// Budget the server starts with: sphere tests, so what a newcomer sees does not depend on the
-/// machine's speed.
-pub const DEFAULT_BUDGET: &str = "8000tests";
+/// Budget the server starts with: a real one, wall clock for the whole frame, a quarter of the
+/// 60 Hz frame period. What is deemed then depends on the machine, as in an application.
+pub const DEFAULT_BUDGET: &str = "4ms";
 
 /// Headless foveal server: runs the budgeted, gaze-scheduled collision loop and serves it over gRPC.
 #[derive(Debug, Clone, Parser)]
@@ -65,7 +65,8 @@ pub struct Cli {
     /// third 0.01-0.41x (docs/BENCHMARKS.md).
     #[arg(long, env = "FOVEAL_SCHEDULER", default_value = "priced", value_parser = parse_scheduler)]
     pub scheduler: SchedulerKind,
-    /// Worker threads for the frame's phases (1..=64; default: the machine's cores, at most 64):
+    /// Worker threads for the frame's phases (1..=64; default: the machine's cores but one, at
+    /// least 1 and at most 64):
     /// with more than one, every frame runs on a pool of this many threads kept for the whole
     /// run (in exact frames its threads wait for the frame's parts awake, yielding their cores,
     /// instead of sleeping, and before every frame they spin for 200 us so that it does not
@@ -111,6 +112,13 @@ pub struct Cli {
     /// Compute the exact answer for every deemed pair (true false positives, true Δ and P).
     #[arg(long, env = "FOVEAL_AUDIT")]
     pub audit: bool,
+    /// The side by side: also settle every frame with a gaze-blind collider (`round-robin` under
+    /// the same budget, or `exact`) and send its metrics and collisions beside the frame's
+    /// (`off`, `round-robin`, `exact`), with both sides' true error measured on the same pairs.
+    /// Refused above 5,000 bodies, where the second collider no longer fits the frame period
+    /// (docs/BENCHMARKS.md).
+    #[arg(long, env = "FOVEAL_COMPARE", default_value = "off", value_parser = crate::compare::Compare::parse)]
+    pub compare: crate::compare::Compare,
     /// Under a wall-clock budget, settle every pair within 5 degrees of the fixation before any
     /// other (priced scheduler), over every candidate and before anything else. Without it the
     /// priced scheduler already does so through the gaze rings where sweep and prune locates
@@ -247,10 +255,15 @@ fn parse_broad_phase(s: &str) -> Result<BroadPhaseKind, String> {
     })
 }
 
-/// The `--threads` default: every core the process may use (each phase splits its work only
-/// where it is large enough to pay for a thread), at most the 64 the engine accepts.
+/// The `--threads` default: every core the process may use but one (each phase splits its work
+/// only where it is large enough to pay for a thread), at least 1 and at most the 64 the engine
+/// accepts. The core left is for what shares the machine with the loop, first of all the viewer:
+/// on 2 cores with the browser viewer open, a 2-thread pool under the default 4 ms budget waited
+/// for a preempted thread until the budget was spent before the narrow phase in 44-57 of 60
+/// frames; one thread never was (docs/BENCHMARKS.md "Side by side").
 fn default_threads() -> u32 {
-    std::thread::available_parallelism().map_or(1, |n| n.get().min(64) as u32)
+    std::thread::available_parallelism()
+        .map_or(1, |n| n.get().saturating_sub(1).clamp(1, 64) as u32)
 }
 
 fn parse_truth(s: &str) -> Result<Truth, String> {
@@ -402,6 +415,7 @@ impl Cli {
                 designs_dir: self.psych_designs.clone(),
             },
             connections,
+            compare: self.compare,
             ..ServerConfig::default()
         };
         config.validate()?;
@@ -555,8 +569,8 @@ mod tests {
         // The engine's defaults but for a scene and budget where the budget bites.
         let mut expected = SimConfig::default();
         expected.scene.bodies = DEFAULT_BODIES;
-        expected.budget = BudgetSpec::SphereTests(8000);
-        // Every core the process may use, at most 64.
+        expected.budget = BudgetSpec::WallMs(4.0);
+        // Every core the process may use but one, at least 1 and at most 64.
         expected.threads = default_threads();
         assert!((1..=64).contains(&expected.threads));
         assert_eq!(c.sim, expected);

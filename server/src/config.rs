@@ -55,6 +55,8 @@ pub struct ServerConfig {
     /// Health turns NOT_SERVING when no frame has completed for this many frame periods, and back
     /// to SERVING when frames flow again.
     pub stall_periods: u32,
+    /// The side by side's second, gaze-blind collider (`--compare`); Configure can change it.
+    pub compare: crate::compare::Compare,
 }
 
 /// Health's default stall threshold in frame periods (half a second at 60 Hz).
@@ -108,6 +110,7 @@ impl Default for ServerConfig {
             stall_periods: DEFAULT_STALL_PERIODS,
             record: None,
             psych: crate::psych::PsychConfig::default(),
+            compare: crate::compare::Compare::Off,
         }
     }
 }
@@ -156,6 +159,7 @@ impl ServerConfig {
         self.limits.validate()?;
         self.connections.validate()?;
         self.sim.validate()?;
+        self.compare.check(&self.sim)?;
         self.limits.check(&self.sim).map(|_| ())
     }
 

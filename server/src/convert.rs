@@ -12,6 +12,7 @@ use foveal_engine::{
 };
 use foveal_proto::pb;
 
+use crate::compare::{Compare, Outcome};
 use crate::fixation_cell::{FixationSource, ResolvedFixation};
 
 fn invalid(field: &'static str, value: impl ToString, expected: impl Into<String>) -> ConfigError {
@@ -213,6 +214,7 @@ pub fn scene_config_to_pb(c: &SimConfig, frame_rate_hz: f64) -> pb::SceneConfig 
             viewing_distance_cm: c.display.viewing_distance_cm,
         }),
         truth: truth_to_pb(s.truth) as i32,
+        compare: pb::Compare::Off as i32,
     }
 }
 
@@ -355,6 +357,8 @@ pub fn merge_masked(
             }
             "audit" => c.audit = req.audit,
             "frame_rate_hz" => rate = req.frame_rate_hz,
+            // The server's, not the engine's: `crate::compare::merge` takes it.
+            "compare" => {}
             "display" => {
                 c.display.width_px = display.width_px;
                 c.display.height_px = display.height_px;
@@ -408,7 +412,8 @@ pub fn changed_fields(before: &pb::SceneConfig, after: &pb::SceneConfig) -> Vec<
         audit,
         frame_rate_hz,
         display,
-        truth
+        truth,
+        compare
     );
     changed
 }
@@ -579,6 +584,32 @@ fn ns_to_s(ns: u64) -> f64 {
     ns as f64 * 1e-9
 }
 
+/// The side by side's part of a frame: the second collider's metrics (with its audit) and time.
+pub fn comparison_to_pb(kind: Compare, out: &Outcome) -> pb::Comparison {
+    let report = FrameReport {
+        audit: Some(out.audit.blind),
+        ..out.report.clone()
+    };
+    let metrics = frame_to_pb(&report, 0, &pb::Fixation::default()).metrics;
+    pb::Comparison {
+        collider: kind.to_pb() as i32,
+        metrics,
+        run_s: ns_to_s(out.run_ns),
+        collisions: None,
+        main_audit: Some(audit_to_pb(&out.audit.main)),
+        audit_stride: out.audit.stride,
+    }
+}
+
+/// The protocol's audit of a frame.
+fn audit_to_pb(a: &foveal_engine::AuditReport) -> pb::AuditMetrics {
+    pb::AuditMetrics {
+        true_false_positives: u64::from(a.false_positives),
+        true_geometric_inaccuracy: a.geometric_inaccuracy,
+        true_perceived_inaccuracy: a.perceived_inaccuracy.unwrap_or(0.0),
+    }
+}
+
 /// A frame without poses or collisions and with `dropped_before` 0 (all are per subscriber).
 pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &pb::Fixation) -> pb::Frame {
     let p = &r.profile;
@@ -600,11 +631,7 @@ pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &pb::Fixation) -> pb::
             geometric_inaccuracy_se: r.geometric_inaccuracy_se,
             perceived_inaccuracy_se: r.perceived_inaccuracy_se.unwrap_or(0.0),
             budget_spent_before_narrow: r.budget_spent_before_narrow,
-            audit: r.audit.map(|a| pb::AuditMetrics {
-                true_false_positives: u64::from(a.false_positives),
-                true_geometric_inaccuracy: a.geometric_inaccuracy,
-                true_perceived_inaccuracy: a.perceived_inaccuracy.unwrap_or(0.0),
-            }),
+            audit: r.audit.as_ref().map(audit_to_pb),
         }),
         profile: Some(pb::PhaseProfile {
             integrate_s: ns_to_s(p.integrate_ns),
@@ -619,6 +646,7 @@ pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &pb::Fixation) -> pb::
         poses: None,
         quantised_poses: None,
         collisions: None,
+        comparison: None,
     }
 }
 

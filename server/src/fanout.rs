@@ -26,6 +26,9 @@ pub struct FrameMsg {
     pub quantised_poses: Option<Arc<pb::QuantisedPoses>>,
     /// The frame's collision list, present while at least one subscriber wants it.
     pub collisions: Option<Arc<pb::Collisions>>,
+    /// The side by side's second collision list, present while the scene compares and at least
+    /// one subscriber wants collisions.
+    pub comparison_collisions: Option<Arc<pb::Collisions>>,
     /// Simulated by a Step: sent to every subscriber whatever its `every_k` (a frame someone
     /// asked to see one at a time).
     pub stepped: bool,
@@ -197,6 +200,9 @@ impl Subscription {
             }
             if w.collisions {
                 frame.collisions = msg.collisions.as_deref().cloned();
+                if let Some(c) = frame.comparison.as_mut() {
+                    c.collisions = msg.comparison_collisions.as_deref().cloned();
+                }
             }
             self.last_sent = Some(index);
             return Some(frame);
@@ -247,6 +253,7 @@ mod tests {
             poses: poses.then(|| Arc::new(pb::Poses::default())),
             quantised_poses: None,
             collisions: None,
+            comparison_collisions: None,
             stepped: false,
         }
     }

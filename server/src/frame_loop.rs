@@ -19,6 +19,7 @@ use foveal_engine::Simulation;
 use tokio::sync::oneshot;
 
 use crate::clock::InstantClock;
+use crate::compare::Comparison;
 use crate::config::frame_period;
 use crate::convert;
 use crate::error::ServerError;
@@ -32,6 +33,8 @@ use foveal_engine::Clock;
 pub struct Swap {
     /// The simulation, already built and validated.
     pub sim: Simulation,
+    /// Its side by side's second collider, if the scene asks for one.
+    pub comparison: Option<Comparison>,
     /// Its description (and the frame rate to run it at).
     pub scene: Arc<Scene>,
     /// Receives the global index of the first frame simulated with it.
@@ -103,13 +106,17 @@ impl FrameLoop {
     /// Start the loop thread on `sim`.
     pub fn spawn(
         sim: Simulation,
+        comparison: Option<Comparison>,
         shared: Arc<Shared>,
         summary_interval: Duration,
     ) -> Result<Self, ServerError> {
         let (commands, rx) = mpsc::channel();
         let thread = std::thread::Builder::new()
             .name("foveal-frame-loop".into())
-            .spawn(move || run(sim, &shared, &rx, summary_interval))
+            .spawn(move || {
+                let mut running = Running { sim, comparison };
+                run(&mut running, &shared, &rx, summary_interval);
+            })
             .map_err(ServerError::SpawnLoop)?;
         Ok(Self {
             commands,
@@ -190,10 +197,17 @@ pub fn inspect(sim: &Simulation, body: u32, frame_index: u64) -> Inspection {
     }
 }
 
+/// What the loop runs: the simulation and the side by side's second collider.
+#[derive(Debug)]
+struct Running {
+    sim: Simulation,
+    comparison: Option<Comparison>,
+}
+
 /// Whether the loop should keep going after handling a command.
 fn handle(
     cmd: Command,
-    sim: &mut Simulation,
+    running: &mut Running,
     offset: &mut u64,
     period: &mut Duration,
     control: &mut Control,
@@ -232,6 +246,7 @@ fn handle(
             true
         }
         Command::Inspect(body, reply) => {
+            let sim = &running.sim;
             let index = if shared.metrics.frames() > *offset {
                 *offset + sim.last_report().index
             } else {
@@ -243,10 +258,14 @@ fn handle(
         Command::Swap(swap) => {
             let Swap {
                 sim: new,
+                comparison,
                 scene,
                 reply,
             } = *swap;
-            *sim = new;
+            *running = Running {
+                sim: new,
+                comparison,
+            };
             // The new simulation counts its frames from 0; the protocol's index keeps counting.
             *offset = shared.metrics.frames();
             *period = frame_period(scene.frame_rate_hz);
@@ -255,6 +274,7 @@ fn handle(
                 bodies = scene.sim.scene.bodies,
                 scheduler = scene.sim.scheduler.name(),
                 budget = ?scene.sim.budget,
+                compare = scene.compare.name(),
                 frame_rate_hz = scene.frame_rate_hz,
                 "scene swapped"
             );
@@ -277,7 +297,7 @@ fn handle(
 const POOL_WARM: Duration = Duration::from_micros(200);
 
 fn run(
-    mut sim: Simulation,
+    running: &mut Running,
     shared: &Shared,
     commands: &mpsc::Receiver<Command>,
     summary_interval: Duration,
@@ -296,14 +316,7 @@ fn run(
             let Ok(cmd) = commands.recv() else {
                 break 'frames;
             };
-            if !handle(
-                cmd,
-                &mut sim,
-                &mut offset,
-                &mut period,
-                &mut control,
-                shared,
-            ) {
+            if !handle(cmd, running, &mut offset, &mut period, &mut control, shared) {
                 break 'frames;
             }
             deadline = Instant::now();
@@ -312,7 +325,7 @@ fn run(
         // Wait for the deadline, serving commands meanwhile; with the deadline already past, only
         // drain what is pending. A simulation with a pool stops waiting POOL_WARM early and keeps
         // its pool busy until the deadline (see `Simulation::warm_pool_until`).
-        let warm = if sim.config().threads > 1 {
+        let warm = if running.sim.config().threads > 1 {
             POOL_WARM
         } else {
             Duration::ZERO
@@ -335,14 +348,7 @@ fn run(
                     Err(RecvTimeoutError::Disconnected) => break 'frames,
                 }
             };
-            if !handle(
-                cmd,
-                &mut sim,
-                &mut offset,
-                &mut period,
-                &mut control,
-                shared,
-            ) {
+            if !handle(cmd, running, &mut offset, &mut period, &mut control, shared) {
                 break 'frames;
             }
         }
@@ -354,16 +360,24 @@ fn run(
         let left = deadline.saturating_duration_since(Instant::now());
         if !left.is_zero() && !stepping {
             let until = clock.now_ns().saturating_add(left.as_nanos() as u64);
-            sim.warm_pool_until(&clock, until);
+            running.sim.warm_pool_until(&clock, until);
         }
         let start = Instant::now();
         let resolved = shared.fixation.resolve(start, shared.gaze_max_age);
-        let report = sim.step(Some(resolved.fixation), &clock);
+        let Running { sim, comparison } = running;
+        sim.step(Some(resolved.fixation), &clock);
         let step = start.elapsed();
+        let report = sim.last_report();
         // The frame reports what the step used (the engine's record), not what was handed in.
         let used = convert::fixation_used(report, &resolved);
-        let frame = convert::frame_to_pb(report, offset + report.index, &used);
+        let mut frame = convert::frame_to_pb(report, offset + report.index, &used);
         summary.record(report, step);
+        if let Some(c) = comparison.as_mut() {
+            let out = c.run(sim, report, &clock);
+            summary.record_comparison(&out.audit, out.run_ns);
+            frame.comparison = Some(convert::comparison_to_pb(c.kind(), &out));
+        }
+        let compared = comparison.as_ref();
         if let Some(rec) = &shared.recorder {
             let t_s = shared.fixation.seconds(start);
             rec.frame(offset + report.index, t_s, &resolved, report);
@@ -371,15 +385,16 @@ fn run(
         let poses = shared
             .fanout
             .wants_poses()
-            .then(|| Arc::new(convert::poses(&sim)));
+            .then(|| Arc::new(convert::poses(sim)));
         let quantised_poses = shared
             .fanout
             .wants_quantised_poses()
-            .then(|| Arc::new(convert::quantised_poses(&sim)));
-        let collisions = shared
-            .fanout
-            .wants_collisions()
-            .then(|| Arc::new(convert::collisions(&sim)));
+            .then(|| Arc::new(convert::quantised_poses(sim)));
+        let wants_collisions = shared.fanout.wants_collisions();
+        let collisions = wants_collisions.then(|| Arc::new(convert::collisions(sim)));
+        let comparison_collisions = compared
+            .filter(|_| wants_collisions)
+            .map(|c| Arc::new(c.collisions(sim)));
         let end = Instant::now();
         shared.metrics.frame_done(used, end);
         shared.fanout.publish(FrameMsg {
@@ -387,6 +402,7 @@ fn run(
             poses,
             quantised_poses,
             collisions,
+            comparison_collisions,
             stepped: stepping,
         });
 
@@ -435,7 +451,8 @@ mod tests {
     #[test]
     fn runs_at_its_rate_swaps_and_stops() {
         let (sim, shared) = small();
-        let lp = FrameLoop::spawn(sim, Arc::clone(&shared), Duration::from_secs(1)).expect("spawn");
+        let lp = FrameLoop::spawn(sim, None, Arc::clone(&shared), Duration::from_secs(1))
+            .expect("spawn");
         std::thread::sleep(Duration::from_millis(200));
         let frames = shared.metrics.frames();
         // 200 Hz for 0.2 s is 40 frames; allow a loaded machine plenty of slack, but no bursts.
@@ -449,6 +466,7 @@ mod tests {
         lp.commands()
             .send(Command::Swap(Box::new(Swap {
                 sim: new,
+                comparison: None,
                 scene,
                 reply,
             })))

@@ -11,6 +11,7 @@
 //! - `auth`: roles by bearer token; `gate`: the layer every request passes (shutdown, roles,
 //!   calls in progress, oversize codes); `limits`: scene-cost limits, gaze rate limits, stream
 //!   and connection limits; `watchdog`: health follows whether frames complete.
+//! - [`compare`]: the side by side, a second gaze-blind collider on every frame (open loop).
 //! - [`frame_loop`]: the frame loop's OS thread: fixed-rate pacing, overrun counting, scene swaps
 //!   at frame boundaries; [`clock`]: the monotonic clock the engine's wall-clock budget runs on.
 //! - `recorder`: `--record FILE`, the session written by its own thread, never blocking a frame.
@@ -45,6 +46,7 @@ use tokio_stream::wrappers::TcpListenerStream;
 mod auth;
 pub mod cli;
 mod clock;
+pub mod compare;
 pub mod config;
 mod control;
 mod convert;
@@ -135,12 +137,13 @@ pub async fn run_with_health(
     };
     let rate = config.frame_rate_hz;
     let sim_config = config.sim.clone();
+    let compare = config.compare;
     // Scene generation and budget calibration can take seconds at large N: not on a worker.
-    let (sim, scene) = tokio::task::spawn_blocking(move || {
-        Simulation::new(sim_config).map(|sim| {
-            let scene = Scene::of(&sim, rate);
-            (sim, scene)
-        })
+    let (sim, scene, comparison) = tokio::task::spawn_blocking(move || {
+        let sim = Simulation::new(sim_config)?;
+        let comparison = compare::Comparison::new(compare, &sim)?;
+        let scene = Scene::of(&sim, rate).with_compare(compare);
+        Ok::<_, foveal_engine::ConfigError>((sim, scene, comparison))
     })
     .await??;
     let shared = Arc::new(
@@ -148,7 +151,12 @@ pub async fn run_with_health(
             .with_gaze_processing(config.gaze_processing)
             .with_recorder(recorder.clone()),
     );
-    let frame_loop = FrameLoop::spawn(sim, Arc::clone(&shared), config.summary_interval)?;
+    let frame_loop = FrameLoop::spawn(
+        sim,
+        comparison,
+        Arc::clone(&shared),
+        config.summary_interval,
+    )?;
     let (trigger, stop) = shutdown::channel();
     let service = FovealService::new(
         Arc::clone(&shared),
@@ -200,6 +208,7 @@ pub async fn run_with_health(
         truth = config.sim.scene.truth.name(),
         scheduler = config.sim.scheduler.name(),
         budget = ?config.sim.budget,
+        compare = config.compare.name(),
         frame_rate_hz = rate,
         tls = config.security.tls.is_some(),
         auth = if config.security.tokens.is_empty() { "open" } else { "tokens" },

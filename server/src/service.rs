@@ -16,6 +16,7 @@ use tokio_stream::wrappers::ReceiverStream;
 use tonic::{Request, Response, Status};
 
 use crate::auth::Caller;
+use crate::compare::{Compare, Comparison};
 use crate::control;
 use crate::convert;
 use crate::fanout;
@@ -283,34 +284,46 @@ impl pb::foveal_server::Foveal for FovealService {
         } else {
             convert::merge_masked(&current.sim, current.frame_rate_hz, &req, &mask)
         };
-        let (config, rate) = merged
-            .and_then(|(config, rate)| self.limits.check(&config).map(|_| (config, rate)))
+        let (config, rate, compare) = merged
+            .and_then(|(config, rate)| {
+                let compare = Compare::merge(current.compare, &req, &mask)?;
+                compare.check(&config)?;
+                self.limits.check(&config).map(|_| (config, rate, compare))
+            })
             .map_err(|e| {
                 tracing::info!(?peer, role, error = %e, "Configure refused");
                 Status::invalid_argument(format!("ConfigureRequest.config: {e}"))
             })?;
         let changed = convert::changed_fields(
             &current.description.config.unwrap_or_default(),
-            &convert::scene_config_to_pb(&config, rate),
+            &pb::SceneConfig {
+                compare: compare.to_pb() as i32,
+                ..convert::scene_config_to_pb(&config, rate)
+            },
         );
         // An empty change list is a restart of the same scene (admins use it to replay a run).
         tracing::info!(?peer, role, changed = ?changed, "Configure accepted");
         // Building can take long (scene generation, calibration of fraction-of-exact budgets):
         // do it on the blocking pool so neither the loop nor the async workers wait for it.
         let built = tokio::task::spawn_blocking(move || {
-            Simulation::new(config).map(|sim| {
-                let scene = Arc::new(Scene::of(&sim, rate));
-                (sim, scene)
-            })
+            let sim = Simulation::new(config)?;
+            let comparison = Comparison::new(compare, &sim)?;
+            let scene = Arc::new(Scene::of(&sim, rate).with_compare(compare));
+            Ok::<_, foveal_engine::ConfigError>((sim, scene, comparison))
         })
         .await
         .map_err(|e| Status::internal(format!("building the simulation failed: {e}")))?;
-        let (sim, scene) =
+        let (sim, scene, comparison) =
             built.map_err(|e| Status::invalid_argument(format!("ConfigureRequest.config: {e}")))?;
         let applied = scene.description.config;
         let (reply, first) = oneshot::channel();
         self.commands
-            .send(Command::Swap(Box::new(Swap { sim, scene, reply })))
+            .send(Command::Swap(Box::new(Swap {
+                sim,
+                comparison,
+                scene,
+                reply,
+            })))
             .map_err(|_| Status::unavailable("the frame loop is not running"))?;
         let first_frame_index = tokio::time::timeout(SWAP_TIMEOUT, first)
             .await

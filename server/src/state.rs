@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 use foveal_engine::{SimConfig, Simulation};
 use foveal_proto::pb;
 
+use crate::compare::Compare;
 use crate::convert;
 use crate::fanout::Fanout;
 use crate::fixation_cell::FixationCell;
@@ -23,6 +24,8 @@ pub struct Scene {
     pub frame_rate_hz: f64,
     /// GetScene's answer.
     pub description: pb::SceneDescription,
+    /// The side by side's second collider, if any (`SceneConfig.compare`).
+    pub compare: Compare,
 }
 
 impl Scene {
@@ -32,7 +35,18 @@ impl Scene {
             sim: sim.config().clone(),
             frame_rate_hz,
             description: convert::scene_description(sim, frame_rate_hz),
+            compare: Compare::Off,
         }
+    }
+
+    /// The same scene with the side by side set to `compare` (GetScene reports it).
+    #[must_use]
+    pub fn with_compare(mut self, compare: Compare) -> Self {
+        self.compare = compare;
+        if let Some(c) = self.description.config.as_mut() {
+            c.compare = compare.to_pb() as i32;
+        }
+        self
     }
 }
 

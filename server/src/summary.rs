@@ -18,6 +18,16 @@ pub struct Summary {
     p_sum: f64,
     pairs_sum: u64,
     deemed_sum: u64,
+    real_sum: u64,
+    /// Pairs and deemed pairs within 5 degrees of the fixation (near) and beyond it (far).
+    near: (u64, u64),
+    far: (u64, u64),
+    /// True P of the frames with an audit, and their count.
+    true_p: (f64, u64),
+    /// The side by side's second collider: its time per frame (ns) and its true P.
+    compare_ns: Vec<u64>,
+    compare_true_p: f64,
+    paired_main_true_p: f64,
     /// Integration and broad-phase time of the frames whose wall-clock budget they spent.
     starved_fixed_ns: Vec<u64>,
     overruns_at_start: u64,
@@ -46,6 +56,13 @@ impl Summary {
             p_sum: 0.0,
             pairs_sum: 0,
             deemed_sum: 0,
+            real_sum: 0,
+            near: (0, 0),
+            far: (0, 0),
+            true_p: (0.0, 0),
+            compare_ns: Vec::new(),
+            compare_true_p: 0.0,
+            paired_main_true_p: 0.0,
             starved_fixed_ns: Vec::new(),
             overruns_at_start: metrics.overruns(),
             gaze_at_start: metrics.gaze_accepted(),
@@ -61,11 +78,29 @@ impl Summary {
         self.p_sum += r.perceived_inaccuracy.unwrap_or(0.0);
         self.pairs_sum += u64::from(r.candidate_pairs);
         self.deemed_sum += u64::from(r.deemed);
+        self.real_sum += u64::from(r.real_collisions);
+        self.near.0 += u64::from(r.foveal_pairs);
+        self.near.1 += u64::from(r.foveal_deemed);
+        self.far.0 += u64::from(r.candidate_pairs.saturating_sub(r.foveal_pairs));
+        self.far.1 += u64::from(r.deemed.saturating_sub(r.foveal_deemed));
+        if let Some(p) = r.audit.and_then(|a| a.perceived_inaccuracy) {
+            self.true_p.0 += p;
+            self.true_p.1 += 1;
+        }
         if r.budget_spent_before_narrow {
             let p = &r.profile;
             self.starved_fixed_ns
                 .push(p.renumber_ns + p.integrate_ns + p.broad_ns);
         }
+    }
+
+    /// Add the side by side's run on the frame just recorded: the wall time it took (ns) and both
+    /// sides' true P (on the same pairs; the frame's own counts as its true P when the frame has
+    /// no audit of its own).
+    pub fn record_comparison(&mut self, audit: &crate::compare::PairedAudit, run_ns: u64) {
+        self.compare_ns.push(run_ns);
+        self.compare_true_p += audit.blind.perceived_inaccuracy.unwrap_or(0.0);
+        self.paired_main_true_p += audit.main.perceived_inaccuracy.unwrap_or(0.0);
     }
 
     /// If the window is over at `now`, log it, publish its rates and start the next one.
@@ -82,6 +117,26 @@ impl Summary {
         metrics.set_gaze_rate(gaze_rate);
         self.collision_ns.sort_unstable();
         self.step_ns.sort_unstable();
+        self.compare_ns.sort_unstable();
+        let share = |(pairs, deemed): (u64, u64)| {
+            if pairs == 0 {
+                0.0
+            } else {
+                deemed as f64 / pairs as f64
+            }
+        };
+        let true_p = if !self.compare_ns.is_empty() {
+            self.paired_main_true_p / self.compare_ns.len() as f64
+        } else if self.true_p.1 == 0 {
+            f64::NAN
+        } else {
+            self.true_p.0 / self.true_p.1 as f64
+        };
+        let compare_true_p = if self.compare_ns.is_empty() {
+            f64::NAN
+        } else {
+            self.compare_true_p / self.compare_ns.len() as f64
+        };
         let per_frame = |v: f64| if frames == 0 { 0.0 } else { v / frames as f64 };
         tracing::info!(
             target: "foveal::summary",
@@ -93,6 +148,13 @@ impl Summary {
             p = format_args!("{:.4}", per_frame(self.p_sum)),
             pairs = format_args!("{:.0}", per_frame(self.pairs_sum as f64)),
             deemed = format_args!("{:.0}", per_frame(self.deemed_sum as f64)),
+            real = format_args!("{:.1}", per_frame(self.real_sum as f64)),
+            deemed_near = format_args!("{:.3}", share(self.near)),
+            deemed_far = format_args!("{:.3}", share(self.far)),
+            true_p = format_args!("{true_p:.4}"),
+            compare_p50_ms = format_args!("{:.3}", ms(quantile(&self.compare_ns, 0.5))),
+            compare_p99_ms = format_args!("{:.3}", ms(quantile(&self.compare_ns, 0.99))),
+            compare_true_p = format_args!("{compare_true_p:.4}"),
             overruns = metrics.overruns().saturating_sub(self.overruns_at_start),
             subscribers,
             gaze_hz = format_args!("{gaze_rate:.0}"),

@@ -6,6 +6,7 @@
 import { fromBinary, toBinary, type MessageInitShape } from "@bufbuild/protobuf";
 import { Code, ConnectError } from "@connectrpc/connect";
 import {
+  Compare,
   FixationSource,
   FrameSchema,
   PairStatus,
@@ -66,6 +67,8 @@ const client = connect(window.location.origin, tokens.token);
 const gazeClient = tokens.gazeToken ? connect(window.location.origin, tokens.gazeToken) : client;
 const view = new SceneView(el<HTMLCanvasElement>("scene"));
 const overlay = new Overlay(el<HTMLCanvasElement>("overlay"));
+/** The side by side's right view and overlay, made the first time the scene compares. */
+let blind: { view: SceneView; overlay: Overlay } | null = null;
 const plots = new Plots(el("plots"), 360);
 const gaze = new MouseGaze(gazeClient, el("scene"));
 const log = new FrameLog();
@@ -96,6 +99,24 @@ const picked = {
   error: "",
 };
 
+/**
+ * The side by side (SceneConfig.compare): whether the scene in force compares, with which collider,
+ * and each side's true P per frame (the page's data the tests read: frame index, true P of the
+ * gaze-steered side and of the gaze-blind side, and where the fixation was).
+ */
+const split = {
+  on: false,
+  collider: "off",
+  frames: [] as { index: number; gaze: number; blind: number; x: number; y: number }[],
+};
+
+/** The collider names of the side-by-side control, in protocol enum order. */
+const COMPARES: [string, Compare, string][] = [
+  ["off", Compare.OFF, "off"],
+  ["round-robin", Compare.ROUND_ROBIN, "round-robin, gaze-blind"],
+  ["exact", Compare.EXACT, "exact"],
+];
+
 /** A first contact the view stopped at (see "Focus on a first contact" below). */
 interface FocusedContact {
   /** The two bodies, a < b. */
@@ -125,6 +146,7 @@ const focus = {
   gaze,
   focus,
   plots,
+  split,
   loop,
   picked,
   draw,
@@ -139,15 +161,82 @@ const focus = {
 function layout(): void {
   const box = el("view-box");
   const aspect = scene?.camera?.aspect || 1.6;
-  const w = Math.max(100, Math.min(box.clientWidth, box.clientHeight * aspect));
+  // Side by side, two views share the width; each keeps a line of caption under it.
+  const sides = split.on ? 2 : 1;
+  const caption = split.on ? 44 : 0;
+  const w = Math.max(100, Math.min((box.clientWidth - 20 * (sides - 1)) / sides, (box.clientHeight - caption) * aspect));
   const h = w / aspect;
-  for (const id of ["scene", "overlay"]) {
+  const ids = split.on ? ["scene", "overlay", "scene-blind", "overlay-blind"] : ["scene", "overlay"];
+  for (const id of ids) {
     const c = el<HTMLCanvasElement>(id);
     c.style.width = `${w}px`;
     c.style.height = `${h}px`;
   }
+  for (const id of ["caption-gaze", "caption-blind"]) el(id).style.width = `${w}px`;
   view.resize(w, h);
   overlay.resize(Math.round(w), Math.round(h));
+  if (split.on && blind) {
+    blind.view.resize(w, h);
+    blind.overlay.resize(Math.round(w), Math.round(h));
+  }
+}
+
+/**
+ * Show or hide the side by side for the scene in force (its `compare`): the right view is made
+ * the first time, loaded with the scene, and follows the left view's camera.
+ */
+function useSplit(d: SceneDescription): void {
+  const c = COMPARES.find(([, v]) => v === d.config?.compare);
+  split.on = !!c && c[1] !== Compare.OFF;
+  split.collider = c ? c[0] : "off";
+  split.frames.length = 0;
+  el("side-blind").hidden = !split.on;
+  el("caption-gaze").hidden = !split.on;
+  if (!split.on) return;
+  if (!blind) {
+    const v = new SceneView(el<HTMLCanvasElement>("scene-blind"));
+    // The left view is the one orbited; the right one looks through its camera.
+    v.controls.enabled = false;
+    blind = { view: v, overlay: new Overlay(el<HTMLCanvasElement>("overlay-blind")) };
+  }
+  blind.view.load(d);
+}
+
+/** The same poses on the right view, coloured by the gaze-blind collider's collision list. */
+function showBlind(f: Frame, bodies: number): void {
+  const c = f.comparison;
+  if (!blind || !c) return;
+  const v = blind.view;
+  v.matrices().set(view.matrices().subarray(0, 16 * bodies));
+  v.posesWritten(bodies);
+  v.colour((set) => {
+    if (c.collisions) {
+      forEachPair(c.collisions.real, (a, b) => (set(a, COLOURS.real), set(b, COLOURS.real)));
+      forEachPair(c.collisions.deemed, (a, b) => (set(a, COLOURS.deemed), set(b, COLOURS.deemed)));
+    }
+  });
+  v.setDetailRegion(view.detailRegion);
+  v.commit();
+}
+
+/** Mean of a side's true P over the frames of the last `frames` frame indices (120: 2 s at 60 Hz). */
+function recentMean(side: "gaze" | "blind", frames: number): number {
+  const last = split.frames[split.frames.length - 1];
+  const s = last ? split.frames.filter((f) => f.index > last.index - frames) : [];
+  return s.length ? s.reduce((a, f) => a + f[side], 0) / s.length : NaN;
+}
+
+/** The captions under the two views: which collider each is and its true P. */
+function drawCaptions(): void {
+  if (!split.on) return;
+  const last = split.frames[split.frames.length - 1];
+  const fmt = (side: "gaze" | "blind") =>
+    last ? `true P ${last[side].toFixed(3)} (mean of the last 2 s: ${recentMean(side, 120).toFixed(3)})` : "true P: waiting for frames…";
+  const cfg = scene?.config;
+  el("caption-gaze").innerHTML = `<b>${schedulerName(cfg?.scheduler)}</b>, steered by your gaze (the mouse)\n`;
+  el("caption-gaze").append(fmt("gaze"));
+  el("caption-blind").innerHTML = `<b>${split.collider === "exact" ? "exact" : "round-robin"}</b>, gaze-blind: the same frame, ${split.collider === "exact" ? "every pair resolved" : "the same budget"}\n`;
+  el("caption-blind").append(fmt("blind"));
 }
 window.addEventListener("resize", layout);
 
@@ -199,6 +288,7 @@ function onFrame(f: Frame): void {
     push(stats.parseMs, performance.now() - p0, 60);
     stats.frameBytes = bytes.length;
   }
+  if (split.on) showBlind(f, bodies);
   stats.framesApplied++;
   stats.lastIndex = Number(f.index);
   stats.bodies = bodies;
@@ -218,12 +308,26 @@ function onFrame(f: Frame): void {
     else if (budget?.case === "exact") use = 0;
     const candidates = Number(m.candidatePairs);
     const p = f.profile;
+    // Side by side, both true P come from the server's paired audit (the same pairs for both).
+    const blindAudit = f.comparison?.metrics?.audit;
+    const mainAudit = f.comparison?.mainAudit;
+    if (split.on && mainAudit && blindAudit) {
+      split.frames.push({
+        index: Number(f.index),
+        gaze: mainAudit.truePerceivedInaccuracy,
+        blind: blindAudit.truePerceivedInaccuracy,
+        x: fix?.x ?? NaN,
+        y: fix?.y ?? NaN,
+      });
+      if (split.frames.length > 600) split.frames.shift();
+    }
     plots.push({
       t: f.simTimeS,
       collisionMs: 1000 * m.collisionTimeS,
       geometric: m.geometricInaccuracy,
       perceived: m.perceivedInaccuracy,
-      truePerceived: m.audit ? m.audit.truePerceivedInaccuracy : null,
+      truePerceived: mainAudit ? mainAudit.truePerceivedInaccuracy : m.audit ? m.audit.truePerceivedInaccuracy : null,
+      blindTruePerceived: blindAudit ? blindAudit.truePerceivedInaccuracy : null,
       budgetUse: use,
       deemedShare: candidates ? Number(m.deemedAtInterruption) / candidates : null,
       fps: arrivals.length,
@@ -239,9 +343,10 @@ function onFrame(f: Frame): void {
 function plotNotes(cfg: SceneConfig | undefined): { perceived: string; budget: string } {
   const budget = cfg?.budget?.kind.case;
   return {
-    perceived: cfg?.audit
-      ? ""
-      : "The true P needs the exact answer: tick \"audit\" to draw it. The solid line is the server's estimate.",
+    perceived:
+      cfg?.audit || (cfg?.compare ?? Compare.OFF) !== Compare.OFF
+        ? ""
+        : "The true P needs the exact answer: tick \"audit\" (or turn the side by side on) to draw it. The solid line is the server's estimate.",
     budget:
       budget === "fractionOfExact"
         ? "Budget used is not drawn under a fraction-of-exact budget (the exact cost is not sent); the share deemed is."
@@ -419,6 +524,7 @@ async function session(): Promise<void> {
   reconnect.succeed();
   scene = d;
   view.load(d);
+  useSplit(d);
   const cfg = d.config;
   region = cfg?.display ? fovealRadius(cfg.display, cfg.eccentricityThresholdDeg) : null;
   fillControls(cfg);
@@ -496,6 +602,7 @@ function fillControls(cfg: SceneConfig | undefined, force = false): void {
   set("measure-model", formatModel(cfg.measureModel));
   set("schedule-model", formatModel(cfg.scheduleModel));
   el<HTMLInputElement>("audit").checked = cfg.audit;
+  set("compare", COMPARES.find(([, v]) => v === cfg.compare)?.[0] ?? "off");
   if (force || document.activeElement !== el("seed")) el<HTMLInputElement>("seed").placeholder = String(cfg.seed);
 }
 
@@ -566,6 +673,15 @@ el("schedule-model").addEventListener("change", (e) =>
   configure("schedule_model", (c) => (c.scheduleModel = parseModel((e.target as HTMLInputElement).value))),
 );
 el("audit").addEventListener("change", () => configure("audit", (c) => (c.audit = el<HTMLInputElement>("audit").checked)));
+/** Turn the side by side on (with `name`'s collider) or off: a Configure of `compare` alone. */
+function setCompare(name: string): Promise<void> {
+  return configure("compare", (c) => {
+    const v = COMPARES.find(([n]) => n === name);
+    if (!v) throw new Error(`side by side: unknown collider ${name}`);
+    c.compare = v[1];
+  });
+}
+el<HTMLSelectElement>("compare").addEventListener("change", (e) => void setCompare((e.target as HTMLSelectElement).value));
 el<HTMLInputElement>("mouse-gaze").addEventListener("change", (e) => (gaze.enabled = (e.target as HTMLInputElement).checked));
 
 /** Hold the view's frame (a close-up; or a pause the server did not allow), or let it go. */
@@ -678,6 +794,7 @@ window.addEventListener("keydown", (e) => {
   else if (e.key === "f") setFocusArmed(!focus.armed);
   else if (e.key === "l") setDraw("links", !draw.links);
   else if (e.key === "e") setDraw("priority", !draw.priority);
+  else if (e.key === "s") void setCompare(split.on ? "off" : "round-robin");
   else if (e.key === "c") setPalette(draw.palette === "standard" ? "colour-blind" : "standard");
   else if (e.key === "?" || e.key === "h") toggleHelp();
   else if (e.key === "Escape") {
@@ -862,6 +979,10 @@ function animate(t: number): void {
   drewLastTick = false;
   if (t - lastDraw >= Math.max(drawCost, MIN_DRAW_INTERVAL_MS)) {
     view.render();
+    if (split.on && blind) {
+      blind.view.followCamera(view);
+      blind.view.render();
+    }
     lastDraw = t;
     drewLastTick = true;
   }
@@ -871,10 +992,13 @@ function animate(t: number): void {
     const ends = c.ends.map((p) => view.toScreen(p));
     overlay.label(focusLabel(c), c.gap / c.radius > 0.005 ? ends : [ends[0]]);
   } else overlay.draw(lastFrame?.fixation, region, gaze.enabled ? gaze.pointer : null);
+  // The right view shows the same fixation (it measures P about it; its scheduler ignores it).
+  if (split.on && blind) blind.overlay.draw(lastFrame?.fixation, region, null);
   if (t - lastPlot > 100) {
     lastPlot = t;
     if (!paused) plots.redraw();
     drawReadout();
+    drawCaptions();
   }
 }
 

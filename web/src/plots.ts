@@ -86,6 +86,8 @@ export interface PlotSample {
   geometric: number;
   perceived: number;
   truePerceived: number | null;
+  /** The side by side's gaze-blind collider's true P on the same frame (null when off). */
+  blindTruePerceived: number | null;
   budgetUse: number | null;
   deemedShare: number | null;
   fps: number;
@@ -112,6 +114,7 @@ export class Plots {
       new Chart(parent, "P, perceived inaccuracy", "unitless", [
         { label: "P estimate", stroke: "#ff6b6b" },
         { label: "P true (audit)", stroke: "#e599f7", dash: [4, 3] },
+        { label: "P true, gaze-blind", stroke: "#74c0fc", dash: [2, 2] },
       ], width),
       new Chart(parent, "budget", "%", [
         { label: "budget used", stroke: "#69db7c" },
@@ -126,7 +129,7 @@ export class Plots {
     const [t, d, p, b, ph, f] = this.charts;
     t.ring.push(s.t, [s.collisionMs]);
     d.ring.push(s.t, [s.geometric]);
-    p.ring.push(s.t, [s.perceived, s.truePerceived]);
+    p.ring.push(s.t, [s.perceived, s.truePerceived, s.blindTruePerceived]);
     b.ring.push(s.t, [s.budgetUse === null ? null : 100 * s.budgetUse, s.deemedShare === null ? null : 100 * s.deemedShare]);
     ph.ring.push(s.t, s.phasesMs);
     f.ring.push(s.t, [s.fps]);

@@ -325,6 +325,25 @@ export class SceneView {
     );
   }
 
+  /**
+   * Look through `other`'s camera (the side by side's right view follows the left one, which
+   * the user orbits).
+   */
+  followCamera(other: SceneView): void {
+    const moved =
+      this.camera.position.distanceToSquared(other.camera.position) > 0 ||
+      this.controls.target.distanceToSquared(other.controls.target) > 0 ||
+      this.camera.near !== other.camera.near;
+    if (!moved) return;
+    this.camera.position.copy(other.camera.position);
+    this.camera.quaternion.copy(other.camera.quaternion);
+    this.camera.up.copy(other.camera.up);
+    this.camera.near = other.camera.near;
+    this.controls.target.copy(other.controls.target);
+    this.camera.updateProjectionMatrix();
+    this.dirty = true;
+  }
+
   /** The instance matrices to write a frame's poses into. */
   matrices(): Float32Array {
     return this.poses;
@@ -441,7 +460,7 @@ export class SceneView {
   }
 
   render(): void {
-    this.controls.update();
+    if (this.controls.enabled) this.controls.update();
     // Orbiting changes which mesh a body needs (every body gets the full one off the server's view).
     const orbited = this.orbited();
     if (orbited !== this.wasOrbited) (this.wasOrbited = orbited), (this.dirty = true);

@@ -26,7 +26,7 @@ import type { Message } from "@bufbuild/protobuf";
  * Describes the file foveal/v1/foveal.proto.
  */
 export const file_foveal_v1_foveal: GenFile = /*@__PURE__*/
-  fileDesc("ChZmb3ZlYWwvdjEvZm92ZWFsLnByb3RvEglmb3ZlYWwudjEijQEKCkdhemVTYW1wbGUSFgoOdHJhY2tlcl90aW1lX3MYASABKAESCQoBeBgCIAEoARIJCgF5GAMgASgBEhAKCHZhbGlkaXR5GAQgASgCEhsKA2V5ZRgFIAEoDjIOLmZvdmVhbC52MS5FeWUSFQoIZml4YXRpb24YBiABKAhIAIgBAUILCglfZml4YXRpb24iPwoPU2FtcGxlUmVqZWN0aW9uEg0KBWluZGV4GAEgASgEEg0KBWZpZWxkGAIgASgJEg4KBnJlYXNvbhgDIAEoCSKbAQoRU3RyZWFtR2F6ZVN1bW1hcnkSEAoIYWNjZXB0ZWQYASABKAQSEAoIcmVqZWN0ZWQYAiABKAQSLgoKcmVqZWN0aW9ucxgDIAMoCzIaLmZvdmVhbC52MS5TYW1wbGVSZWplY3Rpb24SHAoUbGFzdF9hY2NlcHRlZF90aW1lX3MYBCABKAESFAoMcmF0ZV9saW1pdGVkGAUgASgEIkkKD1B1c2hHYXplUmVxdWVzdBImCgdzYW1wbGVzGAEgAygLMhUuZm92ZWFsLnYxLkdhemVTYW1wbGUSDgoGc291cmNlGAIgASgJIpoBChBQdXNoR2F6ZVJlc3BvbnNlEhAKCGFjY2VwdGVkGAEgASgEEhAKCHJlamVjdGVkGAIgASgEEi4KCnJlamVjdGlvbnMYAyADKAsyGi5mb3ZlYWwudjEuU2FtcGxlUmVqZWN0aW9uEhwKFGxhc3RfYWNjZXB0ZWRfdGltZV9zGAQgASgBEhQKDHJhdGVfbGltaXRlZBgFIAEoBCJxChJXYXRjaEZyYW1lc1JlcXVlc3QSDwoHZXZlcnlfaxgBIAEoDRIVCg1pbmNsdWRlX3Bvc2VzGAIgASgIEhcKD3F1YW50aXNlZF9wb3NlcxgDIAEoCBIaChJpbmNsdWRlX2NvbGxpc2lvbnMYBCABKAgiRgoHUmF3R2F6ZRIJCgF4GAEgASgBEgkKAXkYAiABKAESDQoFYWdlX3MYAyABKAESFgoOdHJhY2tlcl90aW1lX3MYBCABKAEiswEKCEZpeGF0aW9uEgkKAXgYASABKAESCQoBeRgCIAEoARINCgVhZ2VfcxgDIAEoARIpCgZzb3VyY2UYBCABKA4yGS5mb3ZlYWwudjEuRml4YXRpb25Tb3VyY2USHwoDcmF3GAUgASgLMhIuZm92ZWFsLnYxLlJhd0dhemUSIwoFdHJhY2sYBiABKA4yFC5mb3ZlYWwudjEuR2F6ZVRyYWNrEhEKCXdpZGVuX2RlZxgHIAEoASJyCgxBdWRpdE1ldHJpY3MSHAoUdHJ1ZV9mYWxzZV9wb3NpdGl2ZXMYASABKAQSIQoZdHJ1ZV9nZW9tZXRyaWNfaW5hY2N1cmFjeRgCIAEoARIhChl0cnVlX3BlcmNlaXZlZF9pbmFjY3VyYWN5GAMgASgBIrcDCgxGcmFtZU1ldHJpY3MSGAoQY29sbGlzaW9uX3RpbWVfcxgBIAEoARIcChRnZW9tZXRyaWNfaW5hY2N1cmFjeRgCIAEoARIcChRwZXJjZWl2ZWRfaW5hY2N1cmFjeRgDIAEoARIXCg9jYW5kaWRhdGVfcGFpcnMYBCABKAQSFwoPcmVhbF9jb2xsaXNpb25zGAUgASgEEh4KFmRlZW1lZF9hdF9pbnRlcnJ1cHRpb24YBiABKAQSGgoScmVzb2x2ZWRfcGVyX2xldmVsGAcgAygEEhQKDHNwaGVyZV90ZXN0cxgIIAEoBBIYChBidWRnZXRfZXhoYXVzdGVkGAkgASgIEisKBWF1ZGl0GAogASgLMhcuZm92ZWFsLnYxLkF1ZGl0TWV0cmljc0gAiAEBEhYKDm1ldHJpY3Nfc3RyaWRlGAsgASgNEh8KF2dlb21ldHJpY19pbmFjY3VyYWN5X3NlGAwgASgBEh8KF3BlcmNlaXZlZF9pbmFjY3VyYWN5X3NlGA0gASgBEiIKGmJ1ZGdldF9zcGVudF9iZWZvcmVfbmFycm93GA4gASgIQggKBl9hdWRpdCKXAQoMUGhhc2VQcm9maWxlEhMKC2ludGVncmF0ZV9zGAEgASgBEg8KB2Jyb2FkX3MYAiABKAESEAoIbmFycm93X3MYAyABKAESEgoKcmVzcG9uc2VfcxgEIAEoARIUCgxwcmlvcml0aXNlX3MYBSABKAESEQoJbWVhc3VyZV9zGAYgASgBEhIKCnJlbnVtYmVyX3MYByABKAEiYQoFUG9zZXMSEQoJcG9zaXRpb25zGAEgASgMEhQKDG9yaWVudGF0aW9ucxgCIAEoDBIfCgZvcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIOCgZib2RpZXMYBCABKA0iegoOUXVhbnRpc2VkUG9zZXMSEQoJcG9zaXRpb25zGAEgASgMEhQKDG9yaWVudGF0aW9ucxgCIAEoDBIfCgZvcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIOCgZleHRlbnQYBCABKAESDgoGYm9kaWVzGAUgASgNIioKCkNvbGxpc2lvbnMSDAoEcmVhbBgBIAEoDBIOCgZkZWVtZWQYAiABKAwiJwoEVmVjMxIJCgF4GAEgASgBEgkKAXkYAiABKAESCQoBehgDIAEoASL5AgoFRnJhbWUSDQoFaW5kZXgYASABKAQSEgoKc2ltX3RpbWVfcxgCIAEoARIlCghmaXhhdGlvbhgDIAEoCzITLmZvdmVhbC52MS5GaXhhdGlvbhIoCgdtZXRyaWNzGAQgASgLMhcuZm92ZWFsLnYxLkZyYW1lTWV0cmljcxIoCgdwcm9maWxlGAUgASgLMhcuZm92ZWFsLnYxLlBoYXNlUHJvZmlsZRIWCg5kcm9wcGVkX2JlZm9yZRgGIAEoBBIkCgVwb3NlcxgHIAEoCzIQLmZvdmVhbC52MS5Qb3Nlc0gAiAEBEjcKD3F1YW50aXNlZF9wb3NlcxgIIAEoCzIZLmZvdmVhbC52MS5RdWFudGlzZWRQb3Nlc0gBiAEBEi4KCmNvbGxpc2lvbnMYCSABKAsyFS5mb3ZlYWwudjEuQ29sbGlzaW9uc0gCiAEBQggKBl9wb3Nlc0ISChBfcXVhbnRpc2VkX3Bvc2VzQg0KC19jb2xsaXNpb25zIg0KC0V4YWN0QnVkZ2V0Ip4BCgZCdWRnZXQSJwoFZXhhY3QYASABKAsyFi5mb3ZlYWwudjEuRXhhY3RCdWRnZXRIABIbChFpbnRlcnJ1cHRfYXRfemVybxgCIAEoCEgAEhEKB3dhbGxfbXMYAyABKAFIABIWCgxzcGhlcmVfdGVzdHMYBCABKARIABIbChFmcmFjdGlvbl9vZl9leGFjdBgFIAEoAUgAQgYKBGtpbmQiCQoHTW9kZWxGMSIUCgdNb2RlbEYyEgkKAWMYASABKAEiLAoMTW9kZWxGMlJhbmdlEg0KBWNfbWluGAEgASgBEg0KBWNfbWF4GAIgASgBIkUKB01vZGVsRjMSCgoCYzEYASABKAESCgoCYzIYAiABKAESCgoCYzMYAyABKAESCgoCZTEYBCABKAESCgoCZTIYBSABKAEi5QEKD1BlcmNlcHR1YWxNb2RlbBIgCgJmMRgBIAEoCzISLmZvdmVhbC52MS5Nb2RlbEYxSAASIAoCZjIYAiABKAsyEi5mb3ZlYWwudjEuTW9kZWxGMkgAEiAKAmYzGAMgASgLMhIuZm92ZWFsLnYxLk1vZGVsRjNIABIrCghmMl9yYW5nZRgFIAEoCzIXLmZvdmVhbC52MS5Nb2RlbEYyUmFuZ2VIABI2ChFlY2NlbnRyaWNpdHlfdW5pdBgEIAEoDjIbLmZvdmVhbC52MS5FY2NlbnRyaWNpdHlVbml0QgcKBW1vZGVsImAKB0Rpc3BsYXkSEAoId2lkdGhfcHgYASABKA0SEQoJaGVpZ2h0X3B4GAIgASgNEhMKC2RpYWdvbmFsX2luGAMgASgBEhsKE3ZpZXdpbmdfZGlzdGFuY2VfY20YBCABKAEi6gMKC1NjZW5lQ29uZmlnEg4KBmJvZGllcxgBIAEoDRIMCgRzZWVkGAIgASgEEg8KB2RlbnNpdHkYAyABKAESFAoMc2hhcGVfcmFkaXVzGAQgASgBEg0KBWRlcHRoGAUgASgNEgwKBGR0X3MYBiABKAESEQoJbWluX3NwZWVkGAcgASgBEhEKCW1heF9zcGVlZBgIIAEoARIQCghtYXhfc3BpbhgJIAEoARInCglzY2hlZHVsZXIYCiABKA4yFC5mb3ZlYWwudjEuU2NoZWR1bGVyEiIKGmVjY2VudHJpY2l0eV90aHJlc2hvbGRfZGVnGAsgASgBEiEKBmJ1ZGdldBgMIAEoCzIRLmZvdmVhbC52MS5CdWRnZXQSMgoOc2NoZWR1bGVfbW9kZWwYDSABKAsyGi5mb3ZlYWwudjEuUGVyY2VwdHVhbE1vZGVsEjEKDW1lYXN1cmVfbW9kZWwYDiABKAsyGi5mb3ZlYWwudjEuUGVyY2VwdHVhbE1vZGVsEg0KBWF1ZGl0GA8gASgIEhUKDWZyYW1lX3JhdGVfaHoYECABKAESIwoHZGlzcGxheRgRIAEoCzISLmZvdmVhbC52MS5EaXNwbGF5Eh8KBXRydXRoGBIgASgOMhAuZm92ZWFsLnYxLlRydXRoIhEKD0dldFNjZW5lUmVxdWVzdCJyCgZTcGhlcmUSCQoBeBgBIAEoAhIJCgF5GAIgASgCEgkKAXoYAyABKAISDgoGcmFkaXVzGAQgASgCEg0KBWxldmVsGAUgASgNEhMKC2ZpcnN0X2NoaWxkGAYgASgNEhMKC2NoaWxkX2NvdW50GAcgASgNIksKClNwaGVyZVRyZWUSIgoHc3BoZXJlcxgBIAMoCzIRLmZvdmVhbC52MS5TcGhlcmUSGQoRc3BoZXJlc19wZXJfbGV2ZWwYAiADKA0iagoGQ2FtZXJhEhwKA2V5ZRgBIAEoCzIPLmZvdmVhbC52MS5WZWMzEh8KBnRhcmdldBgCIAEoCzIPLmZvdmVhbC52MS5WZWMzEhEKCWZvdl95X2RlZxgDIAEoARIOCgZhc3BlY3QYBCABKAEi4wEKEFNjZW5lRGVzY3JpcHRpb24SJgoGY29uZmlnGAEgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEhMKC3ZvbHVtZV9zaWRlGAIgASgBEiYKDXZvbHVtZV9vcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIjCgR0cmVlGAQgASgLMhUuZm92ZWFsLnYxLlNwaGVyZVRyZWUSIQoGY2FtZXJhGAUgASgLMhEuZm92ZWFsLnYxLkNhbWVyYRIiCgRzdGFyGAYgASgLMhQuZm92ZWFsLnYxLlN0YXJTaGFwZSJLCglTdGFyU2hhcGUSDgoGcmFkaXVzGAEgASgBEhMKC2NvcmVfcmFkaXVzGAIgASgBEhkKEXNwaWtlX2Jhc2VfcmFkaXVzGAMgASgBImsKEENvbmZpZ3VyZVJlcXVlc3QSJgoGY29uZmlnGAEgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEi8KC3VwZGF0ZV9tYXNrGAIgASgLMhouZ29vZ2xlLnByb3RvYnVmLkZpZWxkTWFzayJXChFDb25maWd1cmVSZXNwb25zZRInCgdhcHBsaWVkGAEgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEhkKEWZpcnN0X2ZyYW1lX2luZGV4GAIgASgEIhIKEEdldFN0YXR1c1JlcXVlc3QiwgIKBlN0YXR1cxIQCgh1cHRpbWVfcxgBIAEoARIOCgZmcmFtZXMYAiABKAQSCwoDZnBzGAMgASgBEhMKC3N1YnNjcmliZXJzGAQgASgNEh0KFWdhemVfc2FtcGxlc19hY2NlcHRlZBgFIAEoBBIdChVnYXplX3NhbXBsZXNfcmVqZWN0ZWQYBiABKAQSFAoMZ2F6ZV9yYXRlX2h6GAcgASgBEioKDWxhc3RfZml4YXRpb24YCCABKAsyEy5mb3ZlYWwudjEuRml4YXRpb24SJgoGY29uZmlnGAkgASgLMhYuZm92ZWFsLnYxLlNjZW5lQ29uZmlnEiEKGWdhemVfc2FtcGxlc19yYXRlX2xpbWl0ZWQYCiABKAQSGQoRZ2F6ZV9zb3VyY2VzX2xpdmUYCyABKA0SDgoGcGF1c2VkGAwgASgIIg4KDFBhdXNlUmVxdWVzdCIPCg1SZXN1bWVSZXF1ZXN0Ih0KC1N0ZXBSZXF1ZXN0Eg4KBmZyYW1lcxgBIAEoDSIrCglMb29wU3RhdGUSDgoGcGF1c2VkGAEgASgIEg4KBmZyYW1lcxgCIAEoBCIsCg5SZXN0YXJ0UmVxdWVzdBIRCgRzZWVkGAEgASgESACIAQFCBwoFX3NlZWQiIgoSSW5zcGVjdEJvZHlSZXF1ZXN0EgwKBGJvZHkYASABKA0ipAEKDlBhaXJJbnNwZWN0aW9uEg0KBW90aGVyGAEgASgNEiUKBnN0YXR1cxgCIAEoDjIVLmZvdmVhbC52MS5QYWlyU3RhdHVzEg0KBWxldmVsGAMgASgNEhMKC290aGVyX2xldmVsGAQgASgNEhYKDnJlc29sdmVkX2xldmVsGAUgASgNEhAKCHByaW9yaXR5GAYgASgBEg4KBmZvdmVhbBgHIAEoCCJyCg5Cb2R5SW5zcGVjdGlvbhITCgtmcmFtZV9pbmRleBgBIAEoBBIMCgRib2R5GAIgASgNEigKBXBhaXJzGAMgAygLMhkuZm92ZWFsLnYxLlBhaXJJbnNwZWN0aW9uEhMKC3BhaXJzX3RvdGFsGAQgASgNKkoKA0V5ZRITCg9FWUVfVU5TUEVDSUZJRUQQABIMCghFWUVfTEVGVBABEg0KCUVZRV9SSUdIVBACEhEKDUVZRV9CSU5PQ1VMQVIQAyq+AQoORml4YXRpb25Tb3VyY2USHwobRklYQVRJT05fU09VUkNFX1VOU1BFQ0lGSUVEEAASGAoURklYQVRJT05fU09VUkNFX0dBWkUQARIkCiBGSVhBVElPTl9TT1VSQ0VfRkFMTEJBQ0tfTk9fR0FaRRACEiIKHkZJWEFUSU9OX1NPVVJDRV9GQUxMQkFDS19TVEFMRRADEicKI0ZJWEFUSU9OX1NPVVJDRV9GQUxMQkFDS19UUkFDS19MT1NUEAQqyQEKCUdhemVUcmFjaxIaChZHQVpFX1RSQUNLX1VOU1BFQ0lGSUVEEAASFgoSR0FaRV9UUkFDS19OT19HQVpFEAESEgoOR0FaRV9UUkFDS19SQVcQAhIXChNHQVpFX1RSQUNLX0ZJWEFUSU9OEAMSFgoSR0FaRV9UUkFDS19TQUNDQURFEAQSFgoSR0FaRV9UUkFDS19IT0xESU5HEAUSFgoSR0FaRV9UUkFDS19XSURFTkVEEAYSEwoPR0FaRV9UUkFDS19MT1NUEAcq6wEKCVNjaGVkdWxlchIZChVTQ0hFRFVMRVJfVU5TUEVDSUZJRUQQABIZChVTQ0hFRFVMRVJfUk9VTkRfUk9CSU4QARIYChRTQ0hFRFVMRVJfU0VRVUVOVElBTBACEh8KG1NDSEVEVUxFUl9TT1JURURfU0VRVUVOVElBTBADEhsKF1NDSEVEVUxFUl9QUklPUklUWV9PTkxZEAQSHQoZU0NIRURVTEVSX1BSSU9SSVRZX1NPUlRFRBAFEhsKF1NDSEVEVUxFUl9FWFBFQ1RFRF9HQUlOEAYSFAoQU0NIRURVTEVSX1BSSUNFRBAHKnIKEEVjY2VudHJpY2l0eVVuaXQSIQodRUNDRU5UUklDSVRZX1VOSVRfVU5TUEVDSUZJRUQQABIcChhFQ0NFTlRSSUNJVFlfVU5JVF9QSVhFTFMQARIdChlFQ0NFTlRSSUNJVFlfVU5JVF9ERUdSRUVTEAIqRwoFVHJ1dGgSFQoRVFJVVEhfVU5TUEVDSUZJRUQQABIPCgtUUlVUSF9TSEFQRRABEhYKElRSVVRIX0xFQUZfU1BIRVJFUxACKqgBCgpQYWlyU3RhdHVzEhsKF1BBSVJfU1RBVFVTX1VOU1BFQ0lGSUVEEAASGAoUUEFJUl9TVEFUVVNfVU5URVNURUQQARIWChJQQUlSX1NUQVRVU19BQ1RJVkUQAhIZChVQQUlSX1NUQVRVU19DT0xMSURJTkcQAxIYChRQQUlSX1NUQVRVU19TRVBBUkFURRAEEhYKElBBSVJfU1RBVFVTX0RFRU1FRBAFMtMFCgZGb3ZlYWwSQwoKU3RyZWFtR2F6ZRIVLmZvdmVhbC52MS5HYXplU2FtcGxlGhwuZm92ZWFsLnYxLlN0cmVhbUdhemVTdW1tYXJ5KAESQwoIUHVzaEdhemUSGi5mb3ZlYWwudjEuUHVzaEdhemVSZXF1ZXN0GhsuZm92ZWFsLnYxLlB1c2hHYXplUmVzcG9uc2USQAoLV2F0Y2hGcmFtZXMSHS5mb3ZlYWwudjEuV2F0Y2hGcmFtZXNSZXF1ZXN0GhAuZm92ZWFsLnYxLkZyYW1lMAESQwoIR2V0U2NlbmUSGi5mb3ZlYWwudjEuR2V0U2NlbmVSZXF1ZXN0GhsuZm92ZWFsLnYxLlNjZW5lRGVzY3JpcHRpb24SRgoJQ29uZmlndXJlEhsuZm92ZWFsLnYxLkNvbmZpZ3VyZVJlcXVlc3QaHC5mb3ZlYWwudjEuQ29uZmlndXJlUmVzcG9uc2USOwoJR2V0U3RhdHVzEhsuZm92ZWFsLnYxLkdldFN0YXR1c1JlcXVlc3QaES5mb3ZlYWwudjEuU3RhdHVzEjYKBVBhdXNlEhcuZm92ZWFsLnYxLlBhdXNlUmVxdWVzdBoULmZvdmVhbC52MS5Mb29wU3RhdGUSOAoGUmVzdW1lEhguZm92ZWFsLnYxLlJlc3VtZVJlcXVlc3QaFC5mb3ZlYWwudjEuTG9vcFN0YXRlEjQKBFN0ZXASFi5mb3ZlYWwudjEuU3RlcFJlcXVlc3QaFC5mb3ZlYWwudjEuTG9vcFN0YXRlEkIKB1Jlc3RhcnQSGS5mb3ZlYWwudjEuUmVzdGFydFJlcXVlc3QaHC5mb3ZlYWwudjEuQ29uZmlndXJlUmVzcG9uc2USRwoLSW5zcGVjdEJvZHkSHS5mb3ZlYWwudjEuSW5zcGVjdEJvZHlSZXF1ZXN0GhkuZm92ZWFsLnYxLkJvZHlJbnNwZWN0aW9uYgZwcm90bzM", [file_google_protobuf_field_mask]);
+  fileDesc("ChZmb3ZlYWwvdjEvZm92ZWFsLnByb3RvEglmb3ZlYWwudjEijQEKCkdhemVTYW1wbGUSFgoOdHJhY2tlcl90aW1lX3MYASABKAESCQoBeBgCIAEoARIJCgF5GAMgASgBEhAKCHZhbGlkaXR5GAQgASgCEhsKA2V5ZRgFIAEoDjIOLmZvdmVhbC52MS5FeWUSFQoIZml4YXRpb24YBiABKAhIAIgBAUILCglfZml4YXRpb24iPwoPU2FtcGxlUmVqZWN0aW9uEg0KBWluZGV4GAEgASgEEg0KBWZpZWxkGAIgASgJEg4KBnJlYXNvbhgDIAEoCSKbAQoRU3RyZWFtR2F6ZVN1bW1hcnkSEAoIYWNjZXB0ZWQYASABKAQSEAoIcmVqZWN0ZWQYAiABKAQSLgoKcmVqZWN0aW9ucxgDIAMoCzIaLmZvdmVhbC52MS5TYW1wbGVSZWplY3Rpb24SHAoUbGFzdF9hY2NlcHRlZF90aW1lX3MYBCABKAESFAoMcmF0ZV9saW1pdGVkGAUgASgEIkkKD1B1c2hHYXplUmVxdWVzdBImCgdzYW1wbGVzGAEgAygLMhUuZm92ZWFsLnYxLkdhemVTYW1wbGUSDgoGc291cmNlGAIgASgJIpoBChBQdXNoR2F6ZVJlc3BvbnNlEhAKCGFjY2VwdGVkGAEgASgEEhAKCHJlamVjdGVkGAIgASgEEi4KCnJlamVjdGlvbnMYAyADKAsyGi5mb3ZlYWwudjEuU2FtcGxlUmVqZWN0aW9uEhwKFGxhc3RfYWNjZXB0ZWRfdGltZV9zGAQgASgBEhQKDHJhdGVfbGltaXRlZBgFIAEoBCJxChJXYXRjaEZyYW1lc1JlcXVlc3QSDwoHZXZlcnlfaxgBIAEoDRIVCg1pbmNsdWRlX3Bvc2VzGAIgASgIEhcKD3F1YW50aXNlZF9wb3NlcxgDIAEoCBIaChJpbmNsdWRlX2NvbGxpc2lvbnMYBCABKAgiRgoHUmF3R2F6ZRIJCgF4GAEgASgBEgkKAXkYAiABKAESDQoFYWdlX3MYAyABKAESFgoOdHJhY2tlcl90aW1lX3MYBCABKAEiswEKCEZpeGF0aW9uEgkKAXgYASABKAESCQoBeRgCIAEoARINCgVhZ2VfcxgDIAEoARIpCgZzb3VyY2UYBCABKA4yGS5mb3ZlYWwudjEuRml4YXRpb25Tb3VyY2USHwoDcmF3GAUgASgLMhIuZm92ZWFsLnYxLlJhd0dhemUSIwoFdHJhY2sYBiABKA4yFC5mb3ZlYWwudjEuR2F6ZVRyYWNrEhEKCXdpZGVuX2RlZxgHIAEoASJyCgxBdWRpdE1ldHJpY3MSHAoUdHJ1ZV9mYWxzZV9wb3NpdGl2ZXMYASABKAQSIQoZdHJ1ZV9nZW9tZXRyaWNfaW5hY2N1cmFjeRgCIAEoARIhChl0cnVlX3BlcmNlaXZlZF9pbmFjY3VyYWN5GAMgASgBIrcDCgxGcmFtZU1ldHJpY3MSGAoQY29sbGlzaW9uX3RpbWVfcxgBIAEoARIcChRnZW9tZXRyaWNfaW5hY2N1cmFjeRgCIAEoARIcChRwZXJjZWl2ZWRfaW5hY2N1cmFjeRgDIAEoARIXCg9jYW5kaWRhdGVfcGFpcnMYBCABKAQSFwoPcmVhbF9jb2xsaXNpb25zGAUgASgEEh4KFmRlZW1lZF9hdF9pbnRlcnJ1cHRpb24YBiABKAQSGgoScmVzb2x2ZWRfcGVyX2xldmVsGAcgAygEEhQKDHNwaGVyZV90ZXN0cxgIIAEoBBIYChBidWRnZXRfZXhoYXVzdGVkGAkgASgIEisKBWF1ZGl0GAogASgLMhcuZm92ZWFsLnYxLkF1ZGl0TWV0cmljc0gAiAEBEhYKDm1ldHJpY3Nfc3RyaWRlGAsgASgNEh8KF2dlb21ldHJpY19pbmFjY3VyYWN5X3NlGAwgASgBEh8KF3BlcmNlaXZlZF9pbmFjY3VyYWN5X3NlGA0gASgBEiIKGmJ1ZGdldF9zcGVudF9iZWZvcmVfbmFycm93GA4gASgIQggKBl9hdWRpdCKXAQoMUGhhc2VQcm9maWxlEhMKC2ludGVncmF0ZV9zGAEgASgBEg8KB2Jyb2FkX3MYAiABKAESEAoIbmFycm93X3MYAyABKAESEgoKcmVzcG9uc2VfcxgEIAEoARIUCgxwcmlvcml0aXNlX3MYBSABKAESEQoJbWVhc3VyZV9zGAYgASgBEhIKCnJlbnVtYmVyX3MYByABKAEiYQoFUG9zZXMSEQoJcG9zaXRpb25zGAEgASgMEhQKDG9yaWVudGF0aW9ucxgCIAEoDBIfCgZvcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIOCgZib2RpZXMYBCABKA0iegoOUXVhbnRpc2VkUG9zZXMSEQoJcG9zaXRpb25zGAEgASgMEhQKDG9yaWVudGF0aW9ucxgCIAEoDBIfCgZvcmlnaW4YAyABKAsyDy5mb3ZlYWwudjEuVmVjMxIOCgZleHRlbnQYBCABKAESDgoGYm9kaWVzGAUgASgNIioKCkNvbGxpc2lvbnMSDAoEcmVhbBgBIAEoDBIOCgZkZWVtZWQYAiABKAwiJwoEVmVjMxIJCgF4GAEgASgBEgkKAXkYAiABKAESCQoBehgDIAEoASK4AwoFRnJhbWUSDQoFaW5kZXgYASABKAQSEgoKc2ltX3RpbWVfcxgCIAEoARIlCghmaXhhdGlvbhgDIAEoCzITLmZvdmVhbC52MS5GaXhhdGlvbhIoCgdtZXRyaWNzGAQgASgLMhcuZm92ZWFsLnYxLkZyYW1lTWV0cmljcxIoCgdwcm9maWxlGAUgASgLMhcuZm92ZWFsLnYxLlBoYXNlUHJvZmlsZRIWCg5kcm9wcGVkX2JlZm9yZRgGIAEoBBIkCgVwb3NlcxgHIAEoCzIQLmZvdmVhbC52MS5Qb3Nlc0gAiAEBEjcKD3F1YW50aXNlZF9wb3NlcxgIIAEoCzIZLmZvdmVhbC52MS5RdWFudGlzZWRQb3Nlc0gBiAEBEi4KCmNvbGxpc2lvbnMYCSABKAsyFS5mb3ZlYWwudjEuQ29sbGlzaW9uc0gCiAEBEi4KCmNvbXBhcmlzb24YCiABKAsyFS5mb3ZlYWwudjEuQ29tcGFyaXNvbkgDiAEBQggKBl9wb3Nlc0ISChBfcXVhbnRpc2VkX3Bvc2VzQg0KC19jb2xsaXNpb25zQg0KC19jb21wYXJpc29uIu0BCgpDb21wYXJpc29uEiQKCGNvbGxpZGVyGAEgASgOMhIuZm92ZWFsLnYxLkNvbXBhcmUSKAoHbWV0cmljcxgCIAEoCzIXLmZvdmVhbC52MS5GcmFtZU1ldHJpY3MSDQoFcnVuX3MYAyABKAESLgoKY29sbGlzaW9ucxgEIAEoCzIVLmZvdmVhbC52MS5Db2xsaXNpb25zSACIAQESKwoKbWFpbl9hdWRpdBgFIAEoCzIXLmZvdmVhbC52MS5BdWRpdE1ldHJpY3MSFAoMYXVkaXRfc3RyaWRlGAYgASgNQg0KC19jb2xsaXNpb25zIg0KC0V4YWN0QnVkZ2V0Ip4BCgZCdWRnZXQSJwoFZXhhY3QYASABKAsyFi5mb3ZlYWwudjEuRXhhY3RCdWRnZXRIABIbChFpbnRlcnJ1cHRfYXRfemVybxgCIAEoCEgAEhEKB3dhbGxfbXMYAyABKAFIABIWCgxzcGhlcmVfdGVzdHMYBCABKARIABIbChFmcmFjdGlvbl9vZl9leGFjdBgFIAEoAUgAQgYKBGtpbmQiCQoHTW9kZWxGMSIUCgdNb2RlbEYyEgkKAWMYASABKAEiLAoMTW9kZWxGMlJhbmdlEg0KBWNfbWluGAEgASgBEg0KBWNfbWF4GAIgASgBIkUKB01vZGVsRjMSCgoCYzEYASABKAESCgoCYzIYAiABKAESCgoCYzMYAyABKAESCgoCZTEYBCABKAESCgoCZTIYBSABKAEi5QEKD1BlcmNlcHR1YWxNb2RlbBIgCgJmMRgBIAEoCzISLmZvdmVhbC52MS5Nb2RlbEYxSAASIAoCZjIYAiABKAsyEi5mb3ZlYWwudjEuTW9kZWxGMkgAEiAKAmYzGAMgASgLMhIuZm92ZWFsLnYxLk1vZGVsRjNIABIrCghmMl9yYW5nZRgFIAEoCzIXLmZvdmVhbC52MS5Nb2RlbEYyUmFuZ2VIABI2ChFlY2NlbnRyaWNpdHlfdW5pdBgEIAEoDjIbLmZvdmVhbC52MS5FY2NlbnRyaWNpdHlVbml0QgcKBW1vZGVsImAKB0Rpc3BsYXkSEAoId2lkdGhfcHgYASABKA0SEQoJaGVpZ2h0X3B4GAIgASgNEhMKC2RpYWdvbmFsX2luGAMgASgBEhsKE3ZpZXdpbmdfZGlzdGFuY2VfY20YBCABKAEijwQKC1NjZW5lQ29uZmlnEg4KBmJvZGllcxgBIAEoDRIMCgRzZWVkGAIgASgEEg8KB2RlbnNpdHkYAyABKAESFAoMc2hhcGVfcmFkaXVzGAQgASgBEg0KBWRlcHRoGAUgASgNEgwKBGR0X3MYBiABKAESEQoJbWluX3NwZWVkGAcgASgBEhEKCW1heF9zcGVlZBgIIAEoARIQCghtYXhfc3BpbhgJIAEoARInCglzY2hlZHVsZXIYCiABKA4yFC5mb3ZlYWwudjEuU2NoZWR1bGVyEiIKGmVjY2VudHJpY2l0eV90aHJlc2hvbGRfZGVnGAsgASgBEiEKBmJ1ZGdldBgMIAEoCzIRLmZvdmVhbC52MS5CdWRnZXQSMgoOc2NoZWR1bGVfbW9kZWwYDSABKAsyGi5mb3ZlYWwudjEuUGVyY2VwdHVhbE1vZGVsEjEKDW1lYXN1cmVfbW9kZWwYDiABKAsyGi5mb3ZlYWwudjEuUGVyY2VwdHVhbE1vZGVsEg0KBWF1ZGl0GA8gASgIEhUKDWZyYW1lX3JhdGVfaHoYECABKAESIwoHZGlzcGxheRgRIAEoCzISLmZvdmVhbC52MS5EaXNwbGF5Eh8KBXRydXRoGBIgASgOMhAuZm92ZWFsLnYxLlRydXRoEiMKB2NvbXBhcmUYEyABKA4yEi5mb3ZlYWwudjEuQ29tcGFyZSIRCg9HZXRTY2VuZVJlcXVlc3QicgoGU3BoZXJlEgkKAXgYASABKAISCQoBeRgCIAEoAhIJCgF6GAMgASgCEg4KBnJhZGl1cxgEIAEoAhINCgVsZXZlbBgFIAEoDRITCgtmaXJzdF9jaGlsZBgGIAEoDRITCgtjaGlsZF9jb3VudBgHIAEoDSJLCgpTcGhlcmVUcmVlEiIKB3NwaGVyZXMYASADKAsyES5mb3ZlYWwudjEuU3BoZXJlEhkKEXNwaGVyZXNfcGVyX2xldmVsGAIgAygNImoKBkNhbWVyYRIcCgNleWUYASABKAsyDy5mb3ZlYWwudjEuVmVjMxIfCgZ0YXJnZXQYAiABKAsyDy5mb3ZlYWwudjEuVmVjMxIRCglmb3ZfeV9kZWcYAyABKAESDgoGYXNwZWN0GAQgASgBIuMBChBTY2VuZURlc2NyaXB0aW9uEiYKBmNvbmZpZxgBIAEoCzIWLmZvdmVhbC52MS5TY2VuZUNvbmZpZxITCgt2b2x1bWVfc2lkZRgCIAEoARImCg12b2x1bWVfb3JpZ2luGAMgASgLMg8uZm92ZWFsLnYxLlZlYzMSIwoEdHJlZRgEIAEoCzIVLmZvdmVhbC52MS5TcGhlcmVUcmVlEiEKBmNhbWVyYRgFIAEoCzIRLmZvdmVhbC52MS5DYW1lcmESIgoEc3RhchgGIAEoCzIULmZvdmVhbC52MS5TdGFyU2hhcGUiSwoJU3RhclNoYXBlEg4KBnJhZGl1cxgBIAEoARITCgtjb3JlX3JhZGl1cxgCIAEoARIZChFzcGlrZV9iYXNlX3JhZGl1cxgDIAEoASJrChBDb25maWd1cmVSZXF1ZXN0EiYKBmNvbmZpZxgBIAEoCzIWLmZvdmVhbC52MS5TY2VuZUNvbmZpZxIvCgt1cGRhdGVfbWFzaxgCIAEoCzIaLmdvb2dsZS5wcm90b2J1Zi5GaWVsZE1hc2siVwoRQ29uZmlndXJlUmVzcG9uc2USJwoHYXBwbGllZBgBIAEoCzIWLmZvdmVhbC52MS5TY2VuZUNvbmZpZxIZChFmaXJzdF9mcmFtZV9pbmRleBgCIAEoBCISChBHZXRTdGF0dXNSZXF1ZXN0IsICCgZTdGF0dXMSEAoIdXB0aW1lX3MYASABKAESDgoGZnJhbWVzGAIgASgEEgsKA2ZwcxgDIAEoARITCgtzdWJzY3JpYmVycxgEIAEoDRIdChVnYXplX3NhbXBsZXNfYWNjZXB0ZWQYBSABKAQSHQoVZ2F6ZV9zYW1wbGVzX3JlamVjdGVkGAYgASgEEhQKDGdhemVfcmF0ZV9oehgHIAEoARIqCg1sYXN0X2ZpeGF0aW9uGAggASgLMhMuZm92ZWFsLnYxLkZpeGF0aW9uEiYKBmNvbmZpZxgJIAEoCzIWLmZvdmVhbC52MS5TY2VuZUNvbmZpZxIhChlnYXplX3NhbXBsZXNfcmF0ZV9saW1pdGVkGAogASgEEhkKEWdhemVfc291cmNlc19saXZlGAsgASgNEg4KBnBhdXNlZBgMIAEoCCIOCgxQYXVzZVJlcXVlc3QiDwoNUmVzdW1lUmVxdWVzdCIdCgtTdGVwUmVxdWVzdBIOCgZmcmFtZXMYASABKA0iKwoJTG9vcFN0YXRlEg4KBnBhdXNlZBgBIAEoCBIOCgZmcmFtZXMYAiABKAQiLAoOUmVzdGFydFJlcXVlc3QSEQoEc2VlZBgBIAEoBEgAiAEBQgcKBV9zZWVkIiIKEkluc3BlY3RCb2R5UmVxdWVzdBIMCgRib2R5GAEgASgNIqQBCg5QYWlySW5zcGVjdGlvbhINCgVvdGhlchgBIAEoDRIlCgZzdGF0dXMYAiABKA4yFS5mb3ZlYWwudjEuUGFpclN0YXR1cxINCgVsZXZlbBgDIAEoDRITCgtvdGhlcl9sZXZlbBgEIAEoDRIWCg5yZXNvbHZlZF9sZXZlbBgFIAEoDRIQCghwcmlvcml0eRgGIAEoARIOCgZmb3ZlYWwYByABKAgicgoOQm9keUluc3BlY3Rpb24SEwoLZnJhbWVfaW5kZXgYASABKAQSDAoEYm9keRgCIAEoDRIoCgVwYWlycxgDIAMoCzIZLmZvdmVhbC52MS5QYWlySW5zcGVjdGlvbhITCgtwYWlyc190b3RhbBgEIAEoDSpKCgNFeWUSEwoPRVlFX1VOU1BFQ0lGSUVEEAASDAoIRVlFX0xFRlQQARINCglFWUVfUklHSFQQAhIRCg1FWUVfQklOT0NVTEFSEAMqvgEKDkZpeGF0aW9uU291cmNlEh8KG0ZJWEFUSU9OX1NPVVJDRV9VTlNQRUNJRklFRBAAEhgKFEZJWEFUSU9OX1NPVVJDRV9HQVpFEAESJAogRklYQVRJT05fU09VUkNFX0ZBTExCQUNLX05PX0dBWkUQAhIiCh5GSVhBVElPTl9TT1VSQ0VfRkFMTEJBQ0tfU1RBTEUQAxInCiNGSVhBVElPTl9TT1VSQ0VfRkFMTEJBQ0tfVFJBQ0tfTE9TVBAEKskBCglHYXplVHJhY2sSGgoWR0FaRV9UUkFDS19VTlNQRUNJRklFRBAAEhYKEkdBWkVfVFJBQ0tfTk9fR0FaRRABEhIKDkdBWkVfVFJBQ0tfUkFXEAISFwoTR0FaRV9UUkFDS19GSVhBVElPThADEhYKEkdBWkVfVFJBQ0tfU0FDQ0FERRAEEhYKEkdBWkVfVFJBQ0tfSE9MRElORxAFEhYKEkdBWkVfVFJBQ0tfV0lERU5FRBAGEhMKD0dBWkVfVFJBQ0tfTE9TVBAHKusBCglTY2hlZHVsZXISGQoVU0NIRURVTEVSX1VOU1BFQ0lGSUVEEAASGQoVU0NIRURVTEVSX1JPVU5EX1JPQklOEAESGAoUU0NIRURVTEVSX1NFUVVFTlRJQUwQAhIfChtTQ0hFRFVMRVJfU09SVEVEX1NFUVVFTlRJQUwQAxIbChdTQ0hFRFVMRVJfUFJJT1JJVFlfT05MWRAEEh0KGVNDSEVEVUxFUl9QUklPUklUWV9TT1JURUQQBRIbChdTQ0hFRFVMRVJfRVhQRUNURURfR0FJThAGEhQKEFNDSEVEVUxFUl9QUklDRUQQBypyChBFY2NlbnRyaWNpdHlVbml0EiEKHUVDQ0VOVFJJQ0lUWV9VTklUX1VOU1BFQ0lGSUVEEAASHAoYRUNDRU5UUklDSVRZX1VOSVRfUElYRUxTEAESHQoZRUNDRU5UUklDSVRZX1VOSVRfREVHUkVFUxACKl8KB0NvbXBhcmUSFwoTQ09NUEFSRV9VTlNQRUNJRklFRBAAEg8KC0NPTVBBUkVfT0ZGEAESFwoTQ09NUEFSRV9ST1VORF9ST0JJThACEhEKDUNPTVBBUkVfRVhBQ1QQAypHCgVUcnV0aBIVChFUUlVUSF9VTlNQRUNJRklFRBAAEg8KC1RSVVRIX1NIQVBFEAESFgoSVFJVVEhfTEVBRl9TUEhFUkVTEAIqqAEKClBhaXJTdGF0dXMSGwoXUEFJUl9TVEFUVVNfVU5TUEVDSUZJRUQQABIYChRQQUlSX1NUQVRVU19VTlRFU1RFRBABEhYKElBBSVJfU1RBVFVTX0FDVElWRRACEhkKFVBBSVJfU1RBVFVTX0NPTExJRElORxADEhgKFFBBSVJfU1RBVFVTX1NFUEFSQVRFEAQSFgoSUEFJUl9TVEFUVVNfREVFTUVEEAUy0wUKBkZvdmVhbBJDCgpTdHJlYW1HYXplEhUuZm92ZWFsLnYxLkdhemVTYW1wbGUaHC5mb3ZlYWwudjEuU3RyZWFtR2F6ZVN1bW1hcnkoARJDCghQdXNoR2F6ZRIaLmZvdmVhbC52MS5QdXNoR2F6ZVJlcXVlc3QaGy5mb3ZlYWwudjEuUHVzaEdhemVSZXNwb25zZRJACgtXYXRjaEZyYW1lcxIdLmZvdmVhbC52MS5XYXRjaEZyYW1lc1JlcXVlc3QaEC5mb3ZlYWwudjEuRnJhbWUwARJDCghHZXRTY2VuZRIaLmZvdmVhbC52MS5HZXRTY2VuZVJlcXVlc3QaGy5mb3ZlYWwudjEuU2NlbmVEZXNjcmlwdGlvbhJGCglDb25maWd1cmUSGy5mb3ZlYWwudjEuQ29uZmlndXJlUmVxdWVzdBocLmZvdmVhbC52MS5Db25maWd1cmVSZXNwb25zZRI7CglHZXRTdGF0dXMSGy5mb3ZlYWwudjEuR2V0U3RhdHVzUmVxdWVzdBoRLmZvdmVhbC52MS5TdGF0dXMSNgoFUGF1c2USFy5mb3ZlYWwudjEuUGF1c2VSZXF1ZXN0GhQuZm92ZWFsLnYxLkxvb3BTdGF0ZRI4CgZSZXN1bWUSGC5mb3ZlYWwudjEuUmVzdW1lUmVxdWVzdBoULmZvdmVhbC52MS5Mb29wU3RhdGUSNAoEU3RlcBIWLmZvdmVhbC52MS5TdGVwUmVxdWVzdBoULmZvdmVhbC52MS5Mb29wU3RhdGUSQgoHUmVzdGFydBIZLmZvdmVhbC52MS5SZXN0YXJ0UmVxdWVzdBocLmZvdmVhbC52MS5Db25maWd1cmVSZXNwb25zZRJHCgtJbnNwZWN0Qm9keRIdLmZvdmVhbC52MS5JbnNwZWN0Qm9keVJlcXVlc3QaGS5mb3ZlYWwudjEuQm9keUluc3BlY3Rpb25iBnByb3RvMw", [file_google_protobuf_field_mask]);
 
 /**
  * One gaze sample from an eye tracker.
@@ -859,6 +859,14 @@ export type Frame = Message<"foveal.v1.Frame"> & {
    * @generated from field: optional foveal.v1.Collisions collisions = 9;
    */
   collisions?: Collisions | undefined;
+
+  /**
+   * The same frame under the gaze-blind collider of SceneConfig.compare (the side by side);
+   * present only while compare is COMPARE_ROUND_ROBIN or COMPARE_EXACT.
+   *
+   * @generated from field: optional foveal.v1.Comparison comparison = 10;
+   */
+  comparison?: Comparison | undefined;
 };
 
 /**
@@ -867,6 +875,71 @@ export type Frame = Message<"foveal.v1.Frame"> & {
  */
 export const FrameSchema: GenMessage<Frame> = /*@__PURE__*/
   messageDesc(file_foveal_v1_foveal, 15);
+
+/**
+ * One frame as a second, gaze-blind collider settled it (SceneConfig.compare): the same poses and
+ * candidate pairs as the frame it rides in (open loop: the server steps one world, whose physics
+ * follows the main scheduler), the same fixation for measuring, and the same narrow-phase budget.
+ *
+ * @generated from message foveal.v1.Comparison
+ */
+export type Comparison = Message<"foveal.v1.Comparison"> & {
+  /**
+   * Which collider: COMPARE_ROUND_ROBIN or COMPARE_EXACT.
+   *
+   * @generated from field: foveal.v1.Compare collider = 1;
+   */
+  collider: Compare;
+
+  /**
+   * Its metrics on this frame. Its audit is always present: the true error of the pairs it deemed,
+   * measured on the same pairs as main_audit (see audit_stride). collision_time_s is its
+   * prioritisation and narrow phase (it does no integration, broad phase or response).
+   *
+   * @generated from field: foveal.v1.FrameMetrics metrics = 2;
+   */
+  metrics?: FrameMetrics | undefined;
+
+  /**
+   * Wall-clock time the second collider took on the server, its metrics and the paired audit
+   * included, seconds: what the side by side adds to every frame.
+   *
+   * @generated from field: double run_s = 3;
+   */
+  runS: number;
+
+  /**
+   * Its collision list, packed as Frame.collisions; present only when
+   * WatchFramesRequest.include_collisions is true.
+   *
+   * @generated from field: optional foveal.v1.Collisions collisions = 4;
+   */
+  collisions?: Collisions | undefined;
+
+  /**
+   * The true error of the pairs this frame's own scheduler deemed (the gaze-steered side),
+   * measured on the same pairs as metrics.audit, whether or not SceneConfig.audit is on.
+   *
+   * @generated from field: foveal.v1.AuditMetrics main_audit = 5;
+   */
+  mainAudit?: AuditMetrics | undefined;
+
+  /**
+   * 1 when both audits settled every pair either side deemed; k when, to keep the audit's cost
+   * within the frame, they settled one in k of those pairs (the same ones for both sides, by
+   * candidate index) and scaled their sums by k (count).
+   *
+   * @generated from field: uint32 audit_stride = 6;
+   */
+  auditStride: number;
+};
+
+/**
+ * Describes the message foveal.v1.Comparison.
+ * Use `create(ComparisonSchema)` to create a new message.
+ */
+export const ComparisonSchema: GenMessage<Comparison> = /*@__PURE__*/
+  messageDesc(file_foveal_v1_foveal, 16);
 
 /**
  * No limit on the narrow phase: every pair is resolved exactly.
@@ -881,7 +954,7 @@ export type ExactBudget = Message<"foveal.v1.ExactBudget"> & {
  * Use `create(ExactBudgetSchema)` to create a new message.
  */
 export const ExactBudgetSchema: GenMessage<ExactBudget> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 16);
+  messageDesc(file_foveal_v1_foveal, 17);
 
 /**
  * How much narrow-phase work one frame may do.
@@ -942,7 +1015,7 @@ export type Budget = Message<"foveal.v1.Budget"> & {
  * Use `create(BudgetSchema)` to create a new message.
  */
 export const BudgetSchema: GenMessage<Budget> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 17);
+  messageDesc(file_foveal_v1_foveal, 18);
 
 /**
  * F1(g, e) = g / e (g when e = 0).
@@ -957,7 +1030,7 @@ export type ModelF1 = Message<"foveal.v1.ModelF1"> & {
  * Use `create(ModelF1Schema)` to create a new message.
  */
 export const ModelF1Schema: GenMessage<ModelF1> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 18);
+  messageDesc(file_foveal_v1_foveal, 19);
 
 /**
  * F2(g, e) = g / exp(e / c).
@@ -978,7 +1051,7 @@ export type ModelF2 = Message<"foveal.v1.ModelF2"> & {
  * Use `create(ModelF2Schema)` to create a new message.
  */
 export const ModelF2Schema: GenMessage<ModelF2> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 19);
+  messageDesc(file_foveal_v1_foveal, 20);
 
 /**
  * F2 averaged over fall-off constants: g times the mean of exp(-e / c) over c log-uniform in
@@ -1007,7 +1080,7 @@ export type ModelF2Range = Message<"foveal.v1.ModelF2Range"> & {
  * Use `create(ModelF2RangeSchema)` to create a new message.
  */
 export const ModelF2RangeSchema: GenMessage<ModelF2Range> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 20);
+  messageDesc(file_foveal_v1_foveal, 21);
 
 /**
  * F3: F2 with c piecewise in e: c1 for e < e1, c2 for e1 <= e < e2, c3 for e >= e2.
@@ -1056,7 +1129,7 @@ export type ModelF3 = Message<"foveal.v1.ModelF3"> & {
  * Use `create(ModelF3Schema)` to create a new message.
  */
 export const ModelF3Schema: GenMessage<ModelF3> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 21);
+  messageDesc(file_foveal_v1_foveal, 22);
 
 /**
  * A perceptual model F(g, e) of how visible a gap g is at eccentricity e.
@@ -1114,7 +1187,7 @@ export type PerceptualModel = Message<"foveal.v1.PerceptualModel"> & {
  * Use `create(PerceptualModelSchema)` to create a new message.
  */
 export const PerceptualModelSchema: GenMessage<PerceptualModel> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 22);
+  messageDesc(file_foveal_v1_foveal, 23);
 
 /**
  * Physical display geometry, for converting screen distances into visual angle.
@@ -1156,7 +1229,7 @@ export type Display = Message<"foveal.v1.Display"> & {
  * Use `create(DisplaySchema)` to create a new message.
  */
 export const DisplaySchema: GenMessage<Display> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 23);
+  messageDesc(file_foveal_v1_foveal, 24);
 
 /**
  * Scene and loop configuration. In a ConfigureRequest without update_mask, unset messages and
@@ -1293,6 +1366,17 @@ export type SceneConfig = Message<"foveal.v1.SceneConfig"> & {
    * @generated from field: foveal.v1.Truth truth = 18;
    */
   truth: Truth;
+
+  /**
+   * The side by side: also run a gaze-blind collider on every frame under the same budget and
+   * send its metrics, its collision list and both sides' true error in Frame.comparison.
+   * Unspecified keeps the current setting. Refused above a number of bodies where the second
+   * collider would break the frame rate (INVALID_ARGUMENT naming `compare` and the limit;
+   * docs/PROTOCOL.md).
+   *
+   * @generated from field: foveal.v1.Compare compare = 19;
+   */
+  compare: Compare;
 };
 
 /**
@@ -1300,7 +1384,7 @@ export type SceneConfig = Message<"foveal.v1.SceneConfig"> & {
  * Use `create(SceneConfigSchema)` to create a new message.
  */
 export const SceneConfigSchema: GenMessage<SceneConfig> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 24);
+  messageDesc(file_foveal_v1_foveal, 25);
 
 /**
  * Request of GetScene (no fields).
@@ -1315,7 +1399,7 @@ export type GetSceneRequest = Message<"foveal.v1.GetSceneRequest"> & {
  * Use `create(GetSceneRequestSchema)` to create a new message.
  */
 export const GetSceneRequestSchema: GenMessage<GetSceneRequest> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 25);
+  messageDesc(file_foveal_v1_foveal, 26);
 
 /**
  * One sphere of the body's sphere tree.
@@ -1379,7 +1463,7 @@ export type Sphere = Message<"foveal.v1.Sphere"> & {
  * Use `create(SphereSchema)` to create a new message.
  */
 export const SphereSchema: GenMessage<Sphere> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 26);
+  messageDesc(file_foveal_v1_foveal, 27);
 
 /**
  * The sphere tree shared by every body.
@@ -1407,7 +1491,7 @@ export type SphereTree = Message<"foveal.v1.SphereTree"> & {
  * Use `create(SphereTreeSchema)` to create a new message.
  */
 export const SphereTreeSchema: GenMessage<SphereTree> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 27);
+  messageDesc(file_foveal_v1_foveal, 28);
 
 /**
  * The camera the perceptual metrics project through.
@@ -1449,7 +1533,7 @@ export type Camera = Message<"foveal.v1.Camera"> & {
  * Use `create(CameraSchema)` to create a new message.
  */
 export const CameraSchema: GenMessage<Camera> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 28);
+  messageDesc(file_foveal_v1_foveal, 29);
 
 /**
  * Everything static about the current scene.
@@ -1505,7 +1589,7 @@ export type SceneDescription = Message<"foveal.v1.SceneDescription"> & {
  * Use `create(SceneDescriptionSchema)` to create a new message.
  */
 export const SceneDescriptionSchema: GenMessage<SceneDescription> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 29);
+  messageDesc(file_foveal_v1_foveal, 30);
 
 /**
  * The star every body is, body frame: a core ball centred at the origin and six cones along
@@ -1542,7 +1626,7 @@ export type StarShape = Message<"foveal.v1.StarShape"> & {
  * Use `create(StarShapeSchema)` to create a new message.
  */
 export const StarShapeSchema: GenMessage<StarShape> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 30);
+  messageDesc(file_foveal_v1_foveal, 31);
 
 /**
  * Request to change the scene.
@@ -1574,7 +1658,7 @@ export type ConfigureRequest = Message<"foveal.v1.ConfigureRequest"> & {
  * Use `create(ConfigureRequestSchema)` to create a new message.
  */
 export const ConfigureRequestSchema: GenMessage<ConfigureRequest> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 31);
+  messageDesc(file_foveal_v1_foveal, 32);
 
 /**
  * Outcome of Configure.
@@ -1602,7 +1686,7 @@ export type ConfigureResponse = Message<"foveal.v1.ConfigureResponse"> & {
  * Use `create(ConfigureResponseSchema)` to create a new message.
  */
 export const ConfigureResponseSchema: GenMessage<ConfigureResponse> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 32);
+  messageDesc(file_foveal_v1_foveal, 33);
 
 /**
  * Request of GetStatus (no fields).
@@ -1617,7 +1701,7 @@ export type GetStatusRequest = Message<"foveal.v1.GetStatusRequest"> & {
  * Use `create(GetStatusRequestSchema)` to create a new message.
  */
 export const GetStatusRequestSchema: GenMessage<GetStatusRequest> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 33);
+  messageDesc(file_foveal_v1_foveal, 34);
 
 /**
  * Server counters.
@@ -1717,7 +1801,7 @@ export type Status = Message<"foveal.v1.Status"> & {
  * Use `create(StatusSchema)` to create a new message.
  */
 export const StatusSchema: GenMessage<Status> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 34);
+  messageDesc(file_foveal_v1_foveal, 35);
 
 /**
  * Request of Pause (no fields).
@@ -1732,7 +1816,7 @@ export type PauseRequest = Message<"foveal.v1.PauseRequest"> & {
  * Use `create(PauseRequestSchema)` to create a new message.
  */
 export const PauseRequestSchema: GenMessage<PauseRequest> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 35);
+  messageDesc(file_foveal_v1_foveal, 36);
 
 /**
  * Request of Resume (no fields).
@@ -1747,7 +1831,7 @@ export type ResumeRequest = Message<"foveal.v1.ResumeRequest"> & {
  * Use `create(ResumeRequestSchema)` to create a new message.
  */
 export const ResumeRequestSchema: GenMessage<ResumeRequest> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 36);
+  messageDesc(file_foveal_v1_foveal, 37);
 
 /**
  * Request of Step.
@@ -1768,7 +1852,7 @@ export type StepRequest = Message<"foveal.v1.StepRequest"> & {
  * Use `create(StepRequestSchema)` to create a new message.
  */
 export const StepRequestSchema: GenMessage<StepRequest> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 37);
+  messageDesc(file_foveal_v1_foveal, 38);
 
 /**
  * The frame loop's state after a Pause, Resume or Step.
@@ -1796,7 +1880,7 @@ export type LoopState = Message<"foveal.v1.LoopState"> & {
  * Use `create(LoopStateSchema)` to create a new message.
  */
 export const LoopStateSchema: GenMessage<LoopState> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 38);
+  messageDesc(file_foveal_v1_foveal, 39);
 
 /**
  * Request of Restart.
@@ -1817,7 +1901,7 @@ export type RestartRequest = Message<"foveal.v1.RestartRequest"> & {
  * Use `create(RestartRequestSchema)` to create a new message.
  */
 export const RestartRequestSchema: GenMessage<RestartRequest> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 39);
+  messageDesc(file_foveal_v1_foveal, 40);
 
 /**
  * Request of InspectBody.
@@ -1838,7 +1922,7 @@ export type InspectBodyRequest = Message<"foveal.v1.InspectBodyRequest"> & {
  * Use `create(InspectBodyRequestSchema)` to create a new message.
  */
 export const InspectBodyRequestSchema: GenMessage<InspectBodyRequest> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 40);
+  messageDesc(file_foveal_v1_foveal, 41);
 
 /**
  * One candidate pair of the inspected body.
@@ -1902,7 +1986,7 @@ export type PairInspection = Message<"foveal.v1.PairInspection"> & {
  * Use `create(PairInspectionSchema)` to create a new message.
  */
 export const PairInspectionSchema: GenMessage<PairInspection> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 41);
+  messageDesc(file_foveal_v1_foveal, 42);
 
 /**
  * A body's candidate pairs in the latest frame.
@@ -1944,7 +2028,7 @@ export type BodyInspection = Message<"foveal.v1.BodyInspection"> & {
  * Use `create(BodyInspectionSchema)` to create a new message.
  */
 export const BodyInspectionSchema: GenMessage<BodyInspection> = /*@__PURE__*/
-  messageDesc(file_foveal_v1_foveal, 42);
+  messageDesc(file_foveal_v1_foveal, 43);
 
 /**
  * Which eye a gaze sample comes from.
@@ -2211,6 +2295,47 @@ export const EccentricityUnitSchema: GenEnum<EccentricityUnit> = /*@__PURE__*/
   enumDesc(file_foveal_v1_foveal, 4);
 
 /**
+ * The gaze-blind collider of the side by side (SceneConfig.compare).
+ *
+ * @generated from enum foveal.v1.Compare
+ */
+export enum Compare {
+  /**
+   * Not said: Configure keeps the setting in force.
+   *
+   * @generated from enum value: COMPARE_UNSPECIFIED = 0;
+   */
+  UNSPECIFIED = 0,
+
+  /**
+   * No second collider (the server's default).
+   *
+   * @generated from enum value: COMPARE_OFF = 1;
+   */
+  OFF = 1,
+
+  /**
+   * Round-robin (section 2 of the paper): every active pair one level per round, no gaze.
+   *
+   * @generated from enum value: COMPARE_ROUND_ROBIN = 2;
+   */
+  ROUND_ROBIN = 2,
+
+  /**
+   * The exact answer: every pair resolved, whatever it costs (true P is 0; the reference).
+   *
+   * @generated from enum value: COMPARE_EXACT = 3;
+   */
+  EXACT = 3,
+}
+
+/**
+ * Describes the enum foveal.v1.Compare.
+ */
+export const CompareSchema: GenEnum<Compare> = /*@__PURE__*/
+  enumDesc(file_foveal_v1_foveal, 5);
+
+/**
  * The definition of the exact answer: when two bodies count as colliding.
  *
  * @generated from enum foveal.v1.Truth
@@ -2245,7 +2370,7 @@ export enum Truth {
  * Describes the enum foveal.v1.Truth.
  */
 export const TruthSchema: GenEnum<Truth> = /*@__PURE__*/
-  enumDesc(file_foveal_v1_foveal, 5);
+  enumDesc(file_foveal_v1_foveal, 6);
 
 /**
  * How far the narrow phase got with a candidate pair in a frame.
@@ -2300,7 +2425,7 @@ export enum PairStatus {
  * Describes the enum foveal.v1.PairStatus.
  */
 export const PairStatusSchema: GenEnum<PairStatus> = /*@__PURE__*/
-  enumDesc(file_foveal_v1_foveal, 6);
+  enumDesc(file_foveal_v1_foveal, 7);
 
 /**
  * The foveal simulation service.
