@@ -2,29 +2,27 @@
 //! same seed gives the same bootstrap and the same simulated responses on every machine, so a
 //! fit's interval is reproducible from its seed.
 
-/// SplitMix64 (Steele, Lea and Flood 2014): 64 bits of state, passes BigCrush, and is what
-/// seeds most larger generators; more than enough for resampling.
+use foveal_gaze::rng::SplitMix64;
+
+/// The gaze crate's SplitMix64 (one generator for the whole client side), with the draws a
+/// resampler needs.
 #[derive(Debug, Clone)]
-pub struct Rng(u64);
+pub struct Rng(SplitMix64);
 
 impl Rng {
     /// A generator from `seed`.
     pub fn new(seed: u64) -> Self {
-        Self(seed)
+        Self(SplitMix64::new(seed))
     }
 
     /// The next 64 random bits.
     pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
+        self.0.next_u64()
     }
 
     /// Uniform in [0, 1).
     pub fn uniform(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+        self.0.next_f64()
     }
 
     /// Uniform in `0..n` (`n > 0`), by rejection so that no index is favoured.
