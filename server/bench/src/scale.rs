@@ -252,6 +252,9 @@ pub struct FrameSample {
     /// [`RunResult::foveal_exact_share`]).
     #[serde(default)]
     pub foveal_exact: bool,
+    /// The frame took the exact pass on its budget's word (`FrameReport::exact_fit`).
+    #[serde(default)]
+    pub exact_fit: bool,
 }
 
 /// The whole command.
@@ -620,6 +623,7 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
             sphere_tests: r.sphere_tests,
             guard_ns: r.guard_ns,
             foveal_exact,
+            exact_fit: r.exact_fit,
         });
         phases_ms.push(ph.iter().map(|(_, ns)| *ns as f64).sum::<f64>() * 1e-6);
         if phase_totals.is_empty() {
@@ -1222,7 +1226,7 @@ pub fn frames_csv(results: &[RunResult]) -> String {
     for k in &names {
         let _ = write!(s, ",{k}_ms");
     }
-    s.push_str(",deemed,stale_regions,sphere_tests,guard_ms,foveal_exact\n");
+    s.push_str(",deemed,stale_regions,sphere_tests,guard_ms,foveal_exact,exact_fit\n");
     for r in results {
         // Where each named phase sits in this run's frames.
         let at: Vec<Option<usize>> = names
@@ -1255,12 +1259,13 @@ pub fn frames_csv(results: &[RunResult]) -> String {
             }
             let _ = writeln!(
                 s,
-                ",{},{},{},{},{}",
+                ",{},{},{},{},{},{}",
                 f.deemed,
                 f.stale_regions,
                 f.sphere_tests,
                 f.guard_ns as f64 * 1e-6,
-                f.foveal_exact
+                f.foveal_exact,
+                f.exact_fit
             );
         }
     }
@@ -1425,6 +1430,7 @@ mod tests {
             let guard_ms: f64 = cells[col("guard_ms")].parse().expect("a number");
             assert!((guard_ms - f.guard_ns as f64 * 1e-6).abs() < 1e-12);
             assert_eq!(cells[col("foveal_exact")], f.foveal_exact.to_string());
+            assert_eq!(cells[col("exact_fit")], f.exact_fit.to_string());
         }
         // Budgeted runs above 30,000 bodies measure more frames than exact ones, so that their
         // p99 is not one or two stalled frames.

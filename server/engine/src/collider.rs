@@ -9,7 +9,7 @@
 //! witnesses and its buffers).
 
 use crate::budget::gate::RINGS_SHARE;
-use crate::budget::{Clock, CostGate, FrameBudget, Meter};
+use crate::budget::{Clock, CostGate, ExactGate, FrameBudget, Meter};
 use crate::config::{SimConfig, Truth};
 use crate::fixation::{Fixation, FrameView};
 use crate::metrics::{self, Fovea};
@@ -110,6 +110,8 @@ pub struct Collider {
     /// What prioritising and ordering cost (ns per candidate pair), learnt from the wall-clock
     /// frames that ordered.
     ordering_cost: CostGate,
+    /// Whether a wall-clock frame can afford the exact pass outright.
+    exact_gate: ExactGate,
     /// The last foveal pass: pairs it settled and the time it took (ns).
     foveal_pass: Option<(u32, u64)>,
     /// The last frame's foveal pairs, when its foveal pass selected exactly the pairs the
@@ -182,6 +184,7 @@ impl Collider {
             rings: Default::default(),
             rings_cost: CostGate::default(),
             ordering_cost: CostGate::default(),
+            exact_gate: ExactGate::default(),
             foveal_pass: None,
             foveal_known: None,
             foveal_marked: false,
@@ -340,7 +343,23 @@ impl Collider {
         self.foveal_marked = false;
         self.counted = None;
         if budget == FrameBudget::Unlimited {
-            self.exact_pass(input, fixation, clock, r, profile, t0);
+            self.exact_pass(input, frame, r, profile, t0, None);
+            return;
+        }
+        // A wall-clock frame whose budget is expected to cover the exact pass takes it: no
+        // order beats it. Cut short (the expectation was wrong), it is learnt from at the
+        // rate it went.
+        let n = input.candidates.len();
+        if self
+            .exact_gate
+            .admits(n, || Meter::new(budget, clock).wall_left_ns())
+        {
+            let mut meter = Meter::new(budget, clock);
+            let all = self.exact_pass(input, frame, r, profile, t0, Some(&mut meter));
+            let spent = clock.now_ns().saturating_sub(t0);
+            let reached = if all { n } else { n - r.deemed as usize };
+            self.exact_gate.learn(spent, reached.max(1));
+            r.exact_fit = all;
             return;
         }
         self.narrow.reset(input.candidates);
@@ -382,6 +401,7 @@ impl Collider {
                     view: None,
                     priorities: &self.priorities,
                     calibration: &self.calibration,
+                    threads: self.config.threads as usize,
                 };
                 self.fallback.run(&mut self.narrow, &work, &mut run.meter);
                 self.scheduler.forget();
@@ -442,6 +462,11 @@ impl Collider {
         }
         let deemed = self.narrow.close_frame(input.world.len());
         let t2 = clock.now_ns();
+        // Every pair settled inside the budget: the exact pass would have fitted (it costs
+        // less than this frame's order and descents did).
+        if deemed == 0 && run.meter.counts_time() && !run.meter.was_exhausted() {
+            self.exact_gate.learn(t2.saturating_sub(t0), n);
+        }
         // The passes are sphere tests: narrow-phase time.
         profile.prioritise_ns = (t1 - t0).saturating_sub(run.pass_ns);
         profile.narrow_ns = t2 - t1 + run.pass_ns.min(t1 - t0);
@@ -531,12 +556,19 @@ impl Collider {
             return;
         }
         let fovea_start = run.clock.now_ns();
+        let work = Work {
+            tree: input.tree,
+            world: input.world,
+            view: None,
+            priorities: &self.priorities,
+            calibration: &self.calibration,
+            threads: self.config.threads as usize,
+        };
         rings.placed = self
             .rings
             .fovea(
                 &mut self.narrow,
-                input.tree,
-                input.world,
+                &work,
                 columns,
                 input.viewer,
                 px,
@@ -573,6 +605,7 @@ impl Collider {
             view: view.as_ref().filter(|_| prioritised),
             priorities: &self.priorities,
             calibration: &self.calibration,
+            threads: self.config.threads as usize,
         };
         self.scheduler.run(&mut self.narrow, &work, &mut run.meter);
         let n = run.n;
@@ -619,6 +652,7 @@ impl Collider {
             view: None,
             priorities: &self.priorities,
             calibration: &self.calibration,
+            threads: self.config.threads as usize,
         };
         if rings.placed {
             // The rings are placed and the fovea done (settled, or the budget spent on it):
@@ -660,19 +694,26 @@ impl Collider {
     /// fovea test. That work is the metrics': the blocks' tally is timed and counted in
     /// [`PhaseProfile::measure_ns`], not in the narrow phase (on several threads, as its time on
     /// all of them over the threads).
+    ///
+    /// With a `meter` (a wall-clock frame expected to afford the pass, see [`ExactGate`]), the
+    /// meter is asked between blocks of pairs; if it says stop, the pairs not reached are
+    /// deemed and the frame closes as a budgeted one. Returns whether every pair was resolved.
     fn exact_pass(
         &mut self,
         input: &FrameInput<'_>,
-        fixation: Option<Fixation>,
-        clock: &dyn Clock,
+        frame: &NarrowFrame<'_>,
         r: &mut FrameReport,
         profile: &mut PhaseProfile,
         t0: u64,
-    ) {
+        meter: Option<&mut Meter<'_>>,
+    ) -> bool {
+        let clock = frame.clock;
         self.priorities.clear();
         let threads = self.config.threads as usize;
         // The metrics' fovea: about the fixation itself.
-        let fixation_px = self.measure_view(input, fixation).map(|v| v.fixation_px);
+        let fixation_px = self
+            .measure_view(input, frame.fixation)
+            .map(|v| v.fixation_px);
         let fovea = fixation_px.map(|px| Fovea::new(input.viewer, px, FOVEAL_DEG));
         let count = metrics::FrameCount::new(
             fovea,
@@ -687,14 +728,28 @@ impl Collider {
             count.count(pairs, &mut acc.0);
             acc.1 += clock.now_ns().saturating_sub(t);
         };
-        let runs = self.narrow.resolve_frame_tallied(
+        let mut go_on = meter.map(|m| move || !m.exhausted_now(0));
+        let runs = self.narrow.resolve_frame_until(
             input.candidates,
             input.tree,
             input.world,
             threads,
             Some(&tally),
+            go_on.as_mut().map(|f| f as &mut dyn FnMut() -> bool),
         );
         let t_end = clock.now_ns();
+        self.scheduler.forget();
+        profile.prioritise_ns = 0;
+        r.candidate_pairs = self.narrow.pairs.len() as u32;
+        let Some(runs) = runs else {
+            // Cut: a budgeted frame's end, its metrics counted from the states.
+            self.counted = None;
+            r.deemed = self.narrow.close_frame(input.world.len());
+            r.budget_exhausted = true;
+            r.sphere_tests = self.narrow.tests;
+            profile.narrow_ns = clock.now_ns().saturating_sub(t0);
+            return false;
+        };
         let mut counts = metrics::Counts::default();
         let mut tally_ns = 0;
         for (c, ns) in &runs {
@@ -704,12 +759,10 @@ impl Collider {
         self.counted = Some((fixation_px, counts));
         let workers = crate::narrow_phase::threads_for(input.candidates.len(), threads) as u64;
         let tally_wall = (tally_ns / workers).min(t_end.saturating_sub(t_near));
-        self.scheduler.forget();
-        profile.prioritise_ns = 0;
         profile.narrow_ns = t_end.saturating_sub(t_near) - tally_wall;
         profile.measure_ns += t_near.saturating_sub(t0) + tally_wall;
-        r.candidate_pairs = self.narrow.pairs.len() as u32;
         r.sphere_tests = self.narrow.tests;
+        true
     }
 
     /// Counts per level, Δ and P (section 3) from the pair states; the foveal counts; and, in audit
@@ -929,6 +982,52 @@ mod tests {
         (cfg, sim)
     }
 
+    /// A wall-clock budget that covers the exact pass takes it once a frame has shown it fits
+    /// (an ordered frame that settled every pair): the same answers as an exact frame, nothing
+    /// deemed. An estimate that proves wrong is cut at the deadline, whole pairs settled and the
+    /// rest deemed, and the next frame orders again.
+    #[test]
+    fn a_budget_that_covers_the_exact_pass_takes_it_and_a_wrong_estimate_is_cut() {
+        let (cfg, sim) = stepped_scene(2_000, 10);
+        let input = sim.frame_input();
+        let fixation = Some(Fixation::at(0.5, 0.5));
+        let mut exact = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+        let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+        // On a clock that stands still, every budget is generous.
+        let wall = FrameBudget::Wall(1_000_000);
+        let first = col.evaluate(&input, fixation, wall, &FrozenClock);
+        assert!(!first.exact_fit && first.deemed == 0, "{first:?}");
+        exact.evaluate(&input, fixation, FrameBudget::Unlimited, &FrozenClock);
+        for _ in 0..3 {
+            // Both remember the same witnesses from the frame before.
+            let want = exact.evaluate(&input, fixation, FrameBudget::Unlimited, &FrozenClock);
+            let r = col.evaluate(&input, fixation, wall, &FrozenClock);
+            assert!(r.exact_fit && r.deemed == 0 && !r.budget_exhausted);
+            assert_eq!(r.sphere_tests, want.sphere_tests);
+            assert_eq!(r.real_collisions, want.real_collisions);
+            assert!(col.foveal_pass().is_none());
+            for (p, q) in col.pairs().iter().zip(exact.pairs()) {
+                assert_eq!((p.a, p.b, p.status), (q.a, q.b, q.status));
+            }
+        }
+        // The estimate (nothing, on that clock) is wrong on a clock that advances: the pass is
+        // cut, settled pairs exact and the rest deemed.
+        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 1_000);
+        let r = col.evaluate(&input, fixation, FrameBudget::Wall(20_000), &clock);
+        assert!(!r.exact_fit && r.budget_exhausted && r.deemed > 0, "{r:?}");
+        let mut settled = 0;
+        for (p, q) in col.pairs().iter().zip(exact.pairs()) {
+            assert!(!p.status.is_open());
+            if p.status != PairStatus::Deemed {
+                assert_eq!(p.status, q.status);
+                settled += 1;
+            }
+        }
+        assert!(settled > 0 && r.deemed as usize + settled == col.pairs().len());
+        let next = col.evaluate(&input, fixation, FrameBudget::Wall(20_000), &clock);
+        assert!(!next.exact_fit && col.pairs().iter().all(|p| !p.status.is_open()));
+    }
+
     /// On a clock that advances 1 µs at every read the ordering, a handful of reads, costs far
     /// more than a 2 µs frame can pay.
     #[test]
@@ -1087,6 +1186,13 @@ mod tests {
                 by_rings += usize::from(a.foveal_deemed > 0);
             }
             assert_eq!((a.foveal_pairs, b.foveal_pairs), (foveal, foveal));
+            if b.exact_fit {
+                // A budget that covers the exact pass takes it (see `ExactGate`): every pair
+                // settled, the fovea's too, without a pass of its own.
+                assert_eq!((b.deemed, b.foveal_deemed), (0, 0), "{budget_us} us");
+                assert!(first.foveal_pass().is_none());
+                continue;
+            }
             assert!(plain.foveal_pass().is_none() && first.foveal_pass().is_some());
             if let Some(known) = first.foveal_known() {
                 // The pass was not cut: it settled every foveal pair, and counted them.

@@ -114,6 +114,10 @@ pub struct FrameReport {
     /// by the gaze rings instead where the broad phase locates its pairs by column and that
     /// placing fitted the time left (see `schedule::rings`), gaze-blind round-robin otherwise.
     pub ordering_shed: bool,
+    /// The wall-clock budget was expected to cover the exact narrow phase, and the frame took it:
+    /// every pair resolved in one parallel pass, without an order (see
+    /// `budget::gate::ExactGate`).
+    pub exact_fit: bool,
     /// The frame placed the gaze rings and settled the pairs within the fovea through them,
     /// whole and nearest the fixation first (see `schedule::rings`): a frame of the priced
     /// scheduler before its ordering, and any frame whose ordering was shed as its whole

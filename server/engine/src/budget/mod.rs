@@ -19,6 +19,6 @@ pub mod shedding;
 pub use crate::clock::{Clock, FrozenClock};
 #[cfg(test)]
 pub(crate) use crate::clock::{Manual, Ticking};
-pub use gate::{CostGate, LEARN_FRAMES};
+pub use gate::{CostGate, ExactGate, LEARN_FRAMES};
 pub use meter::{FrameBudget, Meter};
 pub(crate) use plan::{FramePlan, FramePolicy};

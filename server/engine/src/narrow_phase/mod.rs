@@ -88,6 +88,16 @@ pub type Tally<'a, T> = &'a (dyn Fn(&[PairState], &mut T) + Sync);
 /// measurable per pair.
 pub const TALLY_BLOCK: usize = 512;
 
+/// Entries of an order a thread of [`NarrowPhase::resolve_ordered`] takes at a time: 32 pairs
+/// whose roots touch are about 5-20 µs of tests, short enough that two threads keep close to
+/// the order, long enough that taking one (an atomic add and a copy of 32 states) costs
+/// nothing measurable.
+pub const ORDER_CHUNK: usize = 32;
+
+/// Fewest entries of an order [`NarrowPhase::resolve_ordered`] splits over threads: its pairs'
+/// roots touch, each about 0.2-1 µs of tests, so 256 of them repay waking a pool thread.
+const ORDER_PARALLEL_MIN: usize = 256;
+
 /// Arena entries always kept between frames (16 KiB): small scenes never reallocate.
 const ARENA_KEEP: usize = 4096;
 
@@ -420,7 +430,7 @@ impl NarrowPhase {
             }
             return;
         }
-        self.resolve_runs::<()>(None, tree, world, threads, None);
+        self.resolve_runs::<()>(None, tree, world, threads, None, None);
     }
 
     /// An exact frame in one call: [`Self::reset`] to `candidates`, [`Self::resolve_all`] and
@@ -456,12 +466,35 @@ impl NarrowPhase {
         threads: usize,
         tally: Option<Tally<'_, T>>,
     ) -> Vec<T> {
+        self.resolve_frame_until(candidates, tree, world, threads, tally, None)
+            .unwrap_or_default()
+    }
+
+    /// [`Self::resolve_frame_tallied`], asking `go_on` (on the calling thread) before each
+    /// block of [`TALLY_BLOCK`] pairs it resolves and while it waits for the other threads:
+    /// `None` if it said stop. The frame is then left as a budgeted one after its work: every
+    /// pair resolved whole or untested, for [`Self::close_frame`] to deem the rest; the
+    /// accumulators and the witnesses are not kept.
+    ///
+    /// Why: a wall-clock frame expected to afford the exact pass takes it (see
+    /// `budget::gate::ExactGate`), and an expectation can be wrong: a frame whose work grew
+    /// must still end on time. A block is about 20-40 µs of tests at the paper's density.
+    pub fn resolve_frame_until<T: Default + Send>(
+        &mut self,
+        candidates: &[(u32, u32)],
+        tree: &SphereTree,
+        world: &World,
+        threads: usize,
+        tally: Option<Tally<'_, T>>,
+        go_on: Option<&mut dyn FnMut() -> bool>,
+    ) -> Option<Vec<T>> {
         let n = candidates.len();
         // Every slot below `n` is written by its run before it is read; only growth is filled.
         self.pairs.truncate(n);
         self.pairs.resize(n, PairState::new(0, 0));
         self.start_frame();
-        let (runs, tallies) = self.resolve_runs(Some(candidates), tree, world, threads, tally);
+        let (runs, tallies) =
+            self.resolve_runs(Some(candidates), tree, world, threads, tally, go_on)?;
         self.hit_runs = runs;
         // The witnesses in pair order, as `remember_witnesses` writes them.
         self.forget_witnesses(world.len());
@@ -483,14 +516,16 @@ impl NarrowPhase {
         }
         self.keep_near();
         self.keep_witnessed_bounded();
-        tallies
+        Some(tallies)
     }
 
     /// Resolve every open pair of a frame in which no pair is active, in runs handed to
     /// whichever of up to `threads` threads is free, each pair in one go; with `fresh`, each
     /// run first writes its pairs' states from those candidates (index-parallel to the pairs).
     /// Lists each run's colliding pairs in `run_hits`; returns the number of runs and, with a
-    /// `tally`, each run's accumulator (see [`Self::resolve_frame_tallied`]).
+    /// `tally`, each run's accumulator (see [`Self::resolve_frame_tallied`]); `None` if
+    /// `go_on` said stop (see [`Self::resolve_frame_until`]), the states of the pairs not
+    /// gone through then fresh.
     fn resolve_runs<T: Default + Send>(
         &mut self,
         fresh: Option<&[(u32, u32)]>,
@@ -498,7 +533,8 @@ impl NarrowPhase {
         world: &World,
         threads: usize,
         tally: Option<Tally<'_, T>>,
-    ) -> (usize, Vec<T>) {
+        go_on: Option<&mut dyn FnMut() -> bool>,
+    ) -> Option<(usize, Vec<T>)> {
         let n = self.pairs.len();
         // From here on pairs keep no frame: [`Self::evidence`] computes it again.
         self.frames_live = false;
@@ -534,6 +570,7 @@ impl NarrowPhase {
             &'a mut Vec<u32>,
             &'a mut Vec<u32>,
             T,
+            usize,
         );
         let runs: Vec<Mutex<Run<'_, T>>> = self
             .pairs
@@ -548,7 +585,7 @@ impl NarrowPhase {
             .zip(self.run_hits.iter_mut().zip(self.run_near.iter_mut()))
             .enumerate()
             .map(|(k, (((pairs, memos), cands), (hits, near)))| {
-                Mutex::new((k * size, (pairs, memos), cands, hits, near, T::default()))
+                Mutex::new((k * size, (pairs, memos), cands, hits, near, T::default(), 0))
             })
             .collect();
         let next = AtomicUsize::new(0);
@@ -556,7 +593,12 @@ impl NarrowPhase {
         // at every level from both threads would bounce its cache line between the cores.
         let per_body = size_of::<Vec3>() + size_of::<LMat3>() + size_of::<Witness>();
         let warm = parts > 1 && world.len() * per_body <= WARM_MAX_BYTES;
-        let work = |arena: &mut Vec<[u16; 2]>, scratch: &mut [Vec<[u16; 2]>; 2]| -> u64 {
+        let stop = std::sync::atomic::AtomicBool::new(false);
+        let running = AtomicUsize::new(0);
+        let work = |arena: &mut Vec<[u16; 2]>,
+                    scratch: &mut [Vec<[u16; 2]>; 2],
+                    check: &mut dyn FnMut() -> bool|
+         -> u64 {
             if warm {
                 warm_bodies(world, witness);
             }
@@ -566,7 +608,7 @@ impl NarrowPhase {
                 let mut guard = run
                     .lock()
                     .unwrap_or_else(std::sync::PoisonError::into_inner);
-                let (base, (pairs, memos), cands, hits, near, acc) = &mut *guard;
+                let (base, (pairs, memos), cands, hits, near, acc, done) = &mut *guard;
                 let base = *base;
                 hits.clear();
                 near.clear();
@@ -583,48 +625,83 @@ impl NarrowPhase {
                     witness,
                     tests: &mut count,
                 };
-                lane.resolve_run(
+                *done = lane.resolve_run(
                     cands,
                     base,
                     (hits, near),
                     tree,
                     world,
                     tally.map(|f| (f, &mut *acc)),
+                    check,
                 );
+                if *done < lane.pairs.len() {
+                    break;
+                }
             }
             count
         };
+        // The calling thread alone asks `go_on`; the others see its stop at their next block.
+        let mut go_on = go_on;
+        let mut ask = || {
+            if stop.load(Ordering::Relaxed) {
+                return false;
+            }
+            let more = go_on.as_mut().is_none_or(|go_on| go_on());
+            if !more {
+                stop.store(true, Ordering::Relaxed);
+            }
+            more
+        };
         let mut counts = vec![0u64; parts];
         if parts == 1 {
-            counts[0] = work(&mut first_arena, &mut self.scratch);
+            counts[0] = work(&mut first_arena, &mut self.scratch, &mut ask);
         } else {
             rayon::in_place_scope(|s| {
                 let work = &work;
+                let (stop, running) = (&stop, &running);
                 let (mine, others) = counts.split_at_mut(1);
                 let lanes = self
                     .lane_arenas
                     .iter_mut()
                     .zip(self.lane_scratch.iter_mut());
                 for ((arena, scratch), count) in lanes.zip(others) {
-                    s.spawn(move |_| *count = work(arena, scratch));
+                    s.spawn(move |_| {
+                        running.fetch_add(1, Ordering::AcqRel);
+                        *count = work(arena, scratch, &mut || !stop.load(Ordering::Relaxed));
+                        running.fetch_sub(1, Ordering::AcqRel);
+                    });
                 }
-                mine[0] = work(&mut first_arena, &mut self.scratch);
+                mine[0] = work(&mut first_arena, &mut self.scratch, &mut ask);
+                // No run is left to take: watch the budget while the others finish theirs
+                // (only those running, as in `resolve_selected`).
+                while running.load(Ordering::Acquire) > 0 && ask() {
+                    std::hint::spin_loop();
+                }
             });
         }
-        let tallies = match tally {
-            Some(_) => runs
-                .into_iter()
-                .map(|run| {
-                    run.into_inner()
-                        .unwrap_or_else(std::sync::PoisonError::into_inner)
-                        .5
-                })
-                .collect(),
-            None => Vec::new(),
-        };
         self.arena = first_arena;
         self.tests += counts.iter().sum::<u64>();
-        (run_count, tallies)
+        let runs: Vec<Run<'_, T>> = runs
+            .into_iter()
+            .map(|run| {
+                run.into_inner()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner)
+            })
+            .collect();
+        if stop.load(Ordering::Relaxed) {
+            // The pairs no run went through get their fresh states, for the caller to deem.
+            for (_, (pairs, _), cands, _, _, _, done) in runs {
+                for (p, &(a, b)) in pairs.iter_mut().zip(cands).skip(done) {
+                    *p = PairState::new(a, b);
+                }
+            }
+            return None;
+        }
+        let tallies = match tally {
+            Some(_) => runs.into_iter().map(|run| run.5).collect(),
+            None => Vec::new(),
+        };
+        Some((run_count, tallies))
     }
 
     /// Storage for `parts - 1` helper threads' lanes. Only grown: a frame below
@@ -806,6 +883,188 @@ impl NarrowPhase {
         self.arena = first_arena;
         self.tests += tests;
         settled
+    }
+
+    /// Resolve, each in one go and in the given order, the untested pairs `order` lists, on up
+    /// to `threads` threads (the calling thread is one), until `go_on` says stop; pairs already
+    /// stepped or settled are passed over. `go_on` is asked on the calling thread before each
+    /// pair it resolves, with the frame's sphere tests so far (the other threads' counted at the
+    /// end of each of their chunks), and while it waits for the other threads; they see a stop
+    /// at their next pair. Returns whether every entry was gone through (none left untested
+    /// by a stop).
+    ///
+    /// Why: a scheduler under a wall-clock budget that stepped its pairs one level at a time on
+    /// one thread settled about 0.44x the pairs per millisecond an exact frame does (at 10,000
+    /// bodies: a step loads the pair, its frame and its list, prices it again and puts it back).
+    /// Taken whole, pairs run on the exact frame's kernels and threads. Threads take the order
+    /// [`ORDER_CHUNK`] entries at a time as they free up, so it holds to within a chunk a
+    /// thread; one thread goes through it exactly. A pair's traversal is independent of the
+    /// others', so a resolved pair's state is what resolving it alone gives, on any thread
+    /// count.
+    pub fn resolve_ordered(
+        &mut self,
+        tree: &SphereTree,
+        world: &World,
+        order: &[u32],
+        threads: usize,
+        go_on: &mut dyn FnMut(u64) -> bool,
+    ) -> bool {
+        self.note_tree(tree);
+        let untested = |p: &PairState| p.status == PairStatus::Untested;
+        let parts = if order.len() < self.parallel_min.unwrap_or(ORDER_PARALLEL_MIN) {
+            1
+        } else {
+            threads.clamp(1, 64)
+        };
+        if parts == 1 {
+            let mut slot = [PairFrame::IDENTITY];
+            let mut lane = Lane {
+                pairs: &mut self.pairs,
+                near: &self.near,
+                memo_out: &mut self.memo_out,
+                frames: &mut slot,
+                one_frame: true,
+                wide: !self.four_lanes_only,
+                arena: &mut self.arena,
+                scratch: &mut self.scratch,
+                witness: &self.witness,
+                tests: &mut self.tests,
+            };
+            for &i in order {
+                if !untested(&lane.pairs[i as usize]) {
+                    continue;
+                }
+                if !go_on(*lane.tests) {
+                    return false;
+                }
+                lane.resolve_pair(i as usize, tree, world);
+            }
+            return true;
+        }
+        self.make_lanes(parts);
+        let (witness, wide, leaves) = (&self.witness, !self.four_lanes_only, self.leaf_start);
+        let (near_table, pairs) = (&self.near, &self.pairs[..]);
+        let shape = leaves.is_some();
+        let mut first_arena = std::mem::take(&mut self.arena);
+        let next = AtomicUsize::new(0);
+        let stop = std::sync::atomic::AtomicBool::new(false);
+        let running = AtomicUsize::new(0);
+        let finished_tests = std::sync::atomic::AtomicU64::new(0);
+        let tests_before = self.tests;
+        // One thread's share: each chunk's untested pairs are copied out, resolved in a lane of
+        // their own and handed back as (pair, state), with the memo of each near miss; `check`
+        // is asked before each pair with the tests this thread has done in the chunk.
+        #[derive(Default)]
+        struct Share {
+            tests: u64,
+            cut: bool,
+            states: Vec<(u32, PairState)>,
+            memos: Vec<(u32, Memo)>,
+        }
+        let work = |arena: &mut Vec<[u16; 2]>,
+                    scratch: &mut [Vec<[u16; 2]>; 2],
+                    check: &mut dyn FnMut(u64) -> bool|
+         -> Share {
+            let mut share = Share::default();
+            let mut buf: Vec<PairState> = Vec::with_capacity(ORDER_CHUNK);
+            let mut memo_buf = vec![Memo::EMPTY; if shape { ORDER_CHUNK } else { 0 }];
+            let mut index: Vec<u32> = Vec::with_capacity(ORDER_CHUNK);
+            while !share.cut {
+                let start = next.fetch_add(1, Ordering::Relaxed) * ORDER_CHUNK;
+                if start >= order.len() {
+                    break;
+                }
+                let chunk = &order[start..(start + ORDER_CHUNK).min(order.len())];
+                buf.clear();
+                index.clear();
+                for &i in chunk {
+                    if let Some(p) = pairs.get(i as usize).filter(|p| untested(p)) {
+                        buf.push(*p);
+                        index.push(i);
+                    }
+                }
+                let before = share.tests;
+                let mut slot = [PairFrame::IDENTITY];
+                let mut lane = Lane {
+                    pairs: &mut buf,
+                    near: near_table,
+                    memo_out: &mut memo_buf,
+                    frames: &mut slot,
+                    one_frame: true,
+                    wide,
+                    arena: &mut *arena,
+                    scratch: &mut *scratch,
+                    witness,
+                    tests: &mut share.tests,
+                };
+                let mut resolved = 0;
+                while resolved < lane.pairs.len() {
+                    if !check(*lane.tests - before) {
+                        share.cut = true;
+                        break;
+                    }
+                    lane.resolve_pair(resolved, tree, world);
+                    lane.arena.clear();
+                    resolved += 1;
+                }
+                for (j, (&i, p)) in index.iter().zip(&buf[..resolved]).enumerate() {
+                    share.states.push((i, *p));
+                    if near_miss(p, leaves) {
+                        share.memos.push((i, memo_buf[j]));
+                    }
+                }
+                finished_tests.fetch_add(share.tests - before, Ordering::Relaxed);
+            }
+            share
+        };
+        let mut shares: Vec<Share> = (0..parts).map(|_| Share::default()).collect();
+        rayon::in_place_scope(|s| {
+            let work = &work;
+            let (stop, running, finished_tests) = (&stop, &running, &finished_tests);
+            let (mine, others) = shares.split_at_mut(1);
+            let lanes = self
+                .lane_arenas
+                .iter_mut()
+                .zip(self.lane_scratch.iter_mut());
+            for ((arena, scratch), out) in lanes.zip(others) {
+                s.spawn(move |_| {
+                    running.fetch_add(1, Ordering::AcqRel);
+                    *out = work(arena, scratch, &mut |_| !stop.load(Ordering::Relaxed));
+                    running.fetch_sub(1, Ordering::AcqRel);
+                });
+            }
+            // The calling thread alone reads the budget: every thread's tests of the chunks
+            // finished and its own of the chunk under way.
+            let mut ask = |mine: u64| {
+                let more = !stop.load(Ordering::Relaxed)
+                    && go_on(tests_before + finished_tests.load(Ordering::Relaxed) + mine);
+                if !more {
+                    stop.store(true, Ordering::Relaxed);
+                }
+                more
+            };
+            mine[0] = work(&mut first_arena, &mut self.scratch, &mut ask);
+            // No chunk is left to take: watch the budget while the others finish theirs (only
+            // those running: one not started finds no chunk when it starts, and may be this
+            // thread's to run at the scope's end).
+            while !stop.load(Ordering::Relaxed) && running.load(Ordering::Acquire) > 0 {
+                ask(0);
+                std::hint::spin_loop();
+            }
+        });
+        self.arena = first_arena;
+        let mut all = true;
+        for share in &shares {
+            for &(i, p) in &share.states {
+                self.pairs[i as usize] = p;
+            }
+            for &(i, m) in &share.memos {
+                self.memo_out[i as usize] = m;
+            }
+            self.tests += share.tests;
+            all &= !share.cut;
+        }
+        all
     }
 
     /// Step pair `i` until it is resolved (no budget).
@@ -1512,6 +1771,87 @@ mod tests {
                 .count();
             assert_eq!(settled as u32, got);
             assert!(np.pairs.iter().all(|p| p.status != PairStatus::Active));
+        }
+    }
+
+    /// Pairs resolved whole in any order, on any thread count, end as the exact frame leaves
+    /// them, with the same tests, the same witnesses and near misses for the next frame; a stop
+    /// leaves whole pairs only, and one thread keeps to the order exactly.
+    #[test]
+    fn resolving_in_an_order_settles_whole_pairs_as_the_exact_frame_does() {
+        for truth in [Truth::Shape, Truth::LeafSpheres] {
+            let mut cfg = crate::SimConfig::default();
+            cfg.scene = SceneConfig::paper(1_500, 5);
+            cfg.budget = crate::BudgetSpec::Exact;
+            cfg.scene.truth = truth;
+            let mut sim = crate::Simulation::new(cfg).expect("valid");
+            let tree = sim.tree().clone();
+            let mut exact = NarrowPhase::default();
+            let mut ordered: Vec<NarrowPhase> = (0..3)
+                .map(|_| NarrowPhase {
+                    parallel_min: Some(1),
+                    ..NarrowPhase::default()
+                })
+                .collect();
+            for f in 0..12 {
+                sim.step(None, &crate::FrozenClock);
+                let (world, pairs) = (sim.world(), sim.candidate_pairs());
+                exact.resolve_frame(pairs, &tree, world, 1);
+                // Every pair, in an order far from the candidates' (a stride through them).
+                let n = pairs.len() as u32;
+                let order: Vec<u32> = (0..n).map(|k| (k * 7919) % n).collect();
+                assert!(
+                    !n.is_multiple_of(7919),
+                    "7919 is prime: the stride visits every pair"
+                );
+                for (t, np) in ordered.iter_mut().enumerate() {
+                    np.reset(pairs);
+                    assert!(np.resolve_ordered(&tree, world, &order, t + 1, &mut |_| true));
+                    assert_eq!(
+                        np.tests,
+                        exact.tests,
+                        "{truth:?} frame {f}, {} threads",
+                        t + 1
+                    );
+                    for (i, (p, q)) in np.pairs.iter().zip(&exact.pairs).enumerate() {
+                        assert_eq!(
+                            (p.status, p.resolved_level, p.last),
+                            (q.status, q.resolved_level, q.last),
+                            "{truth:?} frame {f}, pair {i}, {} threads",
+                            t + 1
+                        );
+                    }
+                    np.close_frame(world.len());
+                    assert_eq!(np.near.len(), exact.near.len(), "{truth:?} frame {f}");
+                }
+            }
+            let (world, pairs) = (sim.world(), sim.candidate_pairs());
+            let order: Vec<u32> = (0..pairs.len() as u32).rev().collect();
+            for threads in [1, 2] {
+                let mut np = NarrowPhase {
+                    parallel_min: Some(1),
+                    ..NarrowPhase::default()
+                };
+                np.reset(pairs);
+                let mut asked = 0;
+                let all = np.resolve_ordered(&tree, world, &order, threads, &mut |_| {
+                    asked += 1;
+                    asked <= 100
+                });
+                assert!(!all, "{truth:?}, {threads} threads");
+                assert!(np.pairs.iter().all(|p| p.status != PairStatus::Active));
+                let settled: Vec<usize> = (0..pairs.len())
+                    .filter(|&i| np.pairs[i].status != PairStatus::Untested)
+                    .collect();
+                assert!(settled.len() >= 100, "{}", settled.len());
+                if threads == 1 {
+                    // The last 100 candidates, and nothing else.
+                    assert_eq!(
+                        settled,
+                        (pairs.len() - 100..pairs.len()).collect::<Vec<_>>()
+                    );
+                }
+            }
         }
     }
 

@@ -24,6 +24,37 @@ pub(super) struct Lane<'a> {
     pub(super) tests: &'a mut u64,
 }
 
+/// One pair's step (or, `WHOLE`, its whole descent) in eight-lane kernels, as the value pulp's
+/// `vectorize` compiles for AVX2, rather than a closure. Why: a closure this small is handed
+/// over in registers, and the compiler then left the closure's body (everything inlined into
+/// it) out of line, compiled without the processor's features, with every intrinsic a call:
+/// pairs stepped or resolved one at a time ran at 30-60 ns a sphere test against 3-6 inside
+/// the exact frame's runs, which take the other branch of `vectorize`.
+#[cfg(target_arch = "x86_64")]
+struct OnePair<'l, 'a, 't, const WHOLE: bool> {
+    lane: &'l mut Lane<'a>,
+    simd: V3,
+    i: usize,
+    tree: &'t SphereTree,
+    world: &'t World,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl<const WHOLE: bool> pulp::NullaryFnOnce for OnePair<'_, '_, '_, WHOLE> {
+    type Output = StepOutcome;
+
+    #[inline(always)]
+    fn call(self) -> StepOutcome {
+        let kernel = Avx2(self.simd);
+        if WHOLE {
+            self.lane
+                .resolve_pair_in(kernel, self.i, self.tree, self.world)
+        } else {
+            self.lane.step_in(kernel, self.i, self.tree, self.world)
+        }
+    }
+}
+
 impl Lane<'_> {
     /// Where pair `i`'s frame is kept.
     #[inline]
@@ -33,11 +64,17 @@ impl Lane<'_> {
 
     /// Advance pair `i` by one level of one tree, in the widest [`Kernel`] the processor has.
     pub(super) fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
-        widest!(
-            V3 if self.wide,
-            |simd| self.step_in(Avx2(simd), i, tree, world),
-            self.step_in(Baseline, i, tree, world),
-        )
+        #[cfg(target_arch = "x86_64")]
+        if let Some(simd) = V3::try_new().filter(|_| self.wide) {
+            return simd.vectorize(OnePair::<false> {
+                lane: self,
+                simd,
+                i,
+                tree,
+                world,
+            });
+        }
+        self.step_in(Baseline, i, tree, world)
     }
 
     /// Step pair `i` until it is resolved ([`Self::resolve_pair_in`]), in the widest
@@ -48,17 +85,26 @@ impl Lane<'_> {
         tree: &SphereTree,
         world: &World,
     ) -> StepOutcome {
-        widest!(
-            V3 if self.wide,
-            |simd| self.resolve_pair_in(Avx2(simd), i, tree, world),
-            self.resolve_pair_in(Baseline, i, tree, world),
-        )
+        #[cfg(target_arch = "x86_64")]
+        if let Some(simd) = V3::try_new().filter(|_| self.wide) {
+            return simd.vectorize(OnePair::<true> {
+                lane: self,
+                simd,
+                i,
+                tree,
+                world,
+            });
+        }
+        self.resolve_pair_in(Baseline, i, tree, world)
     }
 
     /// Resolve every open pair of the lane in one go, each pair's state first written from
     /// `cands` where it has one (index-parallel), listing the colliding pairs (numbered from
     /// `base`) in `hits`: a run of [`NarrowPhase::resolve_runs`], the processor asked once for
-    /// its widest [`Kernel`].
+    /// its widest [`Kernel`]. `go_on` is asked before each block of [`TALLY_BLOCK`] pairs;
+    /// returns the pairs gone through (all of them unless it said stop, else a whole number of
+    /// blocks: the states of the rest are not written).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn resolve_run<T>(
         &mut self,
         cands: &[(u32, u32)],
@@ -67,11 +113,21 @@ impl Lane<'_> {
         tree: &SphereTree,
         world: &World,
         mut tally: Option<(Tally<'_, T>, &mut T)>,
-    ) {
+        go_on: &mut dyn FnMut() -> bool,
+    ) -> usize {
         widest!(
             V3 if self.wide,
-            |simd| self.resolve_run_in(Avx2(simd), cands, base, hits, tree, world, &mut tally),
-            self.resolve_run_in(Baseline, cands, base, hits, tree, world, &mut tally),
+            |simd| self.resolve_run_in(
+                Avx2(simd),
+                cands,
+                base,
+                hits,
+                tree,
+                world,
+                &mut tally,
+                go_on
+            ),
+            self.resolve_run_in(Baseline, cands, base, hits, tree, world, &mut tally, go_on),
         )
     }
 
@@ -86,10 +142,14 @@ impl Lane<'_> {
         tree: &SphereTree,
         world: &World,
         tally: &mut Option<(Tally<'_, T>, &mut T)>,
-    ) {
+        go_on: &mut dyn FnMut() -> bool,
+    ) -> usize {
         let n = self.pairs.len();
         let leaves = near_leaves(tree);
         for start in (0..n).step_by(TALLY_BLOCK) {
+            if !go_on() {
+                return start;
+            }
             let end = (start + TALLY_BLOCK).min(n);
             for i in start..end {
                 if let Some(&(a, b)) = cands.get(i) {
@@ -110,6 +170,7 @@ impl Lane<'_> {
                 f(&self.pairs[start..end], acc);
             }
         }
+        n
     }
 
     /// Advance pair `i` by one level of one tree. A pair that collided last frame first re-tests the

@@ -44,6 +44,10 @@ pub struct Work<'a> {
     pub priorities: &'a Priorities,
     /// Calibrated state prices (see [`calibration`]).
     pub calibration: &'a calibration::Calibration,
+    /// Threads the frame may use, the calling thread one of them: under a wall-clock budget
+    /// a scheduler may settle pairs whole on all of them
+    /// ([`NarrowPhase::resolve_ordered`]).
+    pub threads: usize,
 }
 
 /// When a scheduler's order needs the frame's prioritisation (see [`priority`]).

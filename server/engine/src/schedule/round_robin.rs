@@ -71,6 +71,7 @@ mod tests {
             view: None,
             priorities: &priorities,
             calibration: &calibration,
+            threads: 1,
         };
         for spent in [true, false] {
             let clock = Manual(AtomicU64::new(0));
