@@ -533,6 +533,9 @@ fn sim_config(n: u32, seed: u64, fovea_first: bool, truth: Truth) -> SimConfig {
         budget: BudgetSpec::Exact,
         scheduler: SchedulerKind::Sequential,
         fovea_first,
+        // Schedulers compared on identical frames under the same budgets: none takes the exact
+        // pass on its budget's word.
+        exact_when_affordable: false,
         ..SimConfig::default()
     }
 }

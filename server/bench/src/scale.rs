@@ -215,6 +215,14 @@ pub struct RunResult {
     pub deemed_mean: f64,
     /// Mean sphere tests per frame.
     pub sphere_tests_mean: f64,
+    /// Pairs settled exactly (candidates less deemed) per millisecond of the narrow phase
+    /// (prioritising included), over every frame: what the narrow phase's time buys.
+    #[serde(default)]
+    pub settled_per_ms: f64,
+    /// Share of frames that took the exact pass on their budget's word
+    /// (`FrameReport::exact_fit`).
+    #[serde(default)]
+    pub exact_fit_share: f64,
     /// Scene generation and simulation set-up (s).
     pub setup_s: f64,
     /// Warm-up frames (s).
@@ -607,6 +615,7 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
     let (mut good, mut foveal, mut candidates, mut deemed, mut tests) =
         (0u64, 0u64, 0u64, 0u64, 0u64);
     let (mut stale_frames, mut stale_regions, mut stale_pairs, mut regions) = (0u64, 0u64, 0u64, 0);
+    let (mut narrow_ns, mut exact_fit) = (0u64, 0u64);
     let mut frame_trace = Vec::with_capacity(frames);
     for _ in 0..frames {
         let t = Instant::now();
@@ -641,6 +650,8 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         candidates += u64::from(r.candidate_pairs);
         deemed += u64::from(r.deemed);
         tests += r.sphere_tests;
+        narrow_ns += r.profile.prioritise_ns + r.profile.narrow_ns;
+        exact_fit += u64::from(r.exact_fit);
     }
     let total_ms: f64 = step_ms.iter().sum();
     let mean = |v: u64| v as f64 / frames as f64;
@@ -675,6 +686,9 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         candidates_mean: mean(candidates),
         deemed_mean: mean(deemed),
         sphere_tests_mean: mean(tests),
+        settled_per_ms: (candidates - deemed.min(candidates)) as f64
+            / (narrow_ns.max(1) as f64 * 1e-6),
+        exact_fit_share: mean(exact_fit),
         setup_s,
         warmup_s,
         load1_start,
@@ -948,6 +962,29 @@ impl ScaleOutput {
                 false,
             );
         }
+        // A budget buys at least nine tenths of the settled pairs per millisecond the exact
+        // pass does, on as many threads (the issue's target at every N).
+        for n in [10_000, 100_000, 1_000_000] {
+            for threads in [1, 2] {
+                let (Some(exact), Some(budget)) =
+                    (self.find(n, threads, true), self.find(n, threads, false))
+                else {
+                    continue;
+                };
+                check(
+                    format!(
+                        "N = {}, {}, {threads} thread{}: settled pairs per narrow-phase ms, over the exact run's",
+                        grouped(n),
+                        budget.spec.mode.label(),
+                        if threads == 1 { "" } else { "s" }
+                    ),
+                    budget.settled_per_ms / exact.settled_per_ms,
+                    0.9,
+                    "x",
+                    true,
+                );
+            }
+        }
         let worst_measure = self
             .results
             .iter()
@@ -1065,7 +1102,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
     }
     let _ = writeln!(
         s,
-        " step ns/body | broad ns/body | peak RSS (MiB) | foveal exact | foveal pairs/frame | candidates/frame | deemed/frame | stale frames | stale regions | stale pairs/frame |"
+        " step ns/body | broad ns/body | peak RSS (MiB) | foveal exact | foveal pairs/frame | candidates/frame | deemed/frame | settled pairs per narrow ms | exact-pass frames | stale frames | stale regions | stale pairs/frame |"
     );
     let _ = write!(s, "|---|---|---|---|---|---|---|---|---|");
     if rounds.is_some() {
@@ -1074,7 +1111,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
     for _ in &names {
         let _ = write!(s, "---|");
     }
-    let _ = writeln!(s, "---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "---|---|---|---|---|---|---|---|---|---|---|---|");
     for (i, r) in out.results.iter().enumerate() {
         let previous = match out.baseline_of(&r.spec) {
             Some(b) if b.spec == r.spec => "(this run)".to_string(),
@@ -1116,7 +1153,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
         }
         let _ = writeln!(
             s,
-            " {:.1} | {:.1} | {:.0} | {:.1}% | {:.1} | {:.0} | {:.0} | {:.1}% | {:.1} of {} | {:.0} |",
+            " {:.1} | {:.1} | {:.0} | {:.1}% | {:.1} | {:.0} | {:.0} | {:.0} | {:.1}% | {:.1}% | {:.1} of {} | {:.0} |",
             r.step_ns_per_body,
             r.broad_ns_per_body,
             r.peak_rss_kib as f64 / 1024.0,
@@ -1124,6 +1161,8 @@ pub fn markdown(out: &ScaleOutput) -> String {
             r.foveal_pairs_mean,
             r.candidates_mean,
             r.deemed_mean,
+            r.settled_per_ms,
+            100.0 * r.exact_fit_share,
             100.0 * r.stale_share,
             r.stale_regions_mean,
             r.regions,
@@ -1165,7 +1204,7 @@ pub fn csv(results: &[RunResult]) -> String {
     s.push_str(
         ",step_ns_per_body,broad_ns_per_body,peak_rss_kib,foveal_exact_share,foveal_pairs_mean,\
          candidates_mean,deemed_mean,sphere_tests_mean,setup_s,warmup_s,load1_start,scheduler,\
-         stale_share,stale_regions_mean,regions,stale_pairs_mean,round\n",
+         stale_share,stale_regions_mean,regions,stale_pairs_mean,round,settled_per_ms,exact_fit_share\n",
     );
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
     for r in results {
@@ -1193,7 +1232,7 @@ pub fn csv(results: &[RunResult]) -> String {
         }
         let _ = writeln!(
             s,
-            ",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            ",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.step_ns_per_body,
             r.broad_ns_per_body,
             r.peak_rss_kib,
@@ -1210,7 +1249,9 @@ pub fn csv(results: &[RunResult]) -> String {
             r.stale_regions_mean,
             r.regions,
             r.stale_pairs_mean,
-            r.round
+            r.round,
+            r.settled_per_ms,
+            r.exact_fit_share
         );
     }
     s
@@ -1477,6 +1518,8 @@ mod tests {
             candidates_mean: 0.0,
             deemed_mean: 0.0,
             sphere_tests_mean: 0.0,
+            settled_per_ms: 0.0,
+            exact_fit_share: 0.0,
             setup_s: 0.0,
             warmup_s: 0.0,
             load1_start: None,

@@ -373,6 +373,12 @@ pub struct SimConfig {
     /// root pass. At large N the broad phase's regions already put the foveal pairs first
     /// whatever this says; sphere-test budgets and exact frames never take the pass.
     pub fovea_first: bool,
+    /// Under a wall-clock budget, a frame expected to afford the exact narrow phase takes it
+    /// (see `budget::gate::ExactGate`), so that a budget never makes a frame slower or worse
+    /// than exact. Off where schedulers are compared under the same budgets on identical
+    /// frames (the open loop: a probe would spend one frame's budget on a pass it cannot
+    /// finish), and in tests of the ordered path.
+    pub exact_when_affordable: bool,
 }
 
 impl Default for SimConfig {
@@ -394,6 +400,7 @@ impl Default for SimConfig {
             priced: PricedOptions::default(),
             renumber_every: DEFAULT_RENUMBER_EVERY,
             fovea_first: false,
+            exact_when_affordable: true,
         }
     }
 }

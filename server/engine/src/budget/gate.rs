@@ -118,9 +118,10 @@ pub const EXACT_HEADROOM: f64 = 1.25;
 /// (`NarrowPhase::resolve_frame_until`), so a wrong word costs that frame its order, not its
 /// budget; the estimate is therefore learnt from every such frame, quick to rise and slow to
 /// fall (the opposite of [`CostGate`]'s). The first estimate comes from an ordered frame that
-/// settled every pair (a budget that covers the exact pass lets the order finish too); after
-/// [`PROBE_EVERY`] frames in a row that did not take the pass, one takes it again if its
-/// estimate is within twice the time left (the frame's work may have shrunk).
+/// settled every pair, or else from the frame after the first [`LEARN_FRAMES`] (which learn the
+/// order's costs), which takes the pass to measure it; after [`PROBE_EVERY`] frames in a row
+/// that did not take the pass, one takes it again if its estimate is within twice the time
+/// left (the frame's work may have shrunk).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct ExactGate {
     /// Expected ns per candidate pair of the exact narrow phase.
@@ -132,12 +133,18 @@ pub struct ExactGate {
 impl ExactGate {
     /// Whether a frame of `pairs` candidate pairs whose narrow phase has `left()` ns (None: no
     /// wall clock, never) takes the exact pass: expected to fit with [`EXACT_HEADROOM`], or
-    /// a probe; recorded as this frame's answer. `left` is asked only with an estimate (it may
-    /// read a clock, which a frame's budget pays for).
+    /// a probe; recorded as this frame's answer. `left` is asked only with an estimate or for
+    /// a probe (it may read a clock, which a frame's budget pays for).
     pub fn admits(&mut self, pairs: usize, left: impl FnOnce() -> Option<u64>) -> bool {
-        let known = self.per_pair.and_then(|per_pair| Some((per_pair, left()?)));
+        let probe = self.per_pair.is_none() && self.streak >= LEARN_FRAMES;
+        let known = match self.per_pair {
+            Some(per_pair) => left().map(|left| (per_pair, left)),
+            None if probe => left().map(|_| (0.0, 0)),
+            None => None,
+        };
         let yes = match known {
             None => false,
+            Some(_) if probe => true,
             Some((per_pair, left)) => {
                 let cost = per_pair * pairs as f64;
                 cost * EXACT_HEADROOM <= left as f64
@@ -175,7 +182,14 @@ mod tests {
     #[test]
     fn the_exact_gate_admits_what_fits_with_headroom_and_probes_after_a_streak() {
         let mut g = ExactGate::default();
-        assert!(!g.admits(1000, || Some(u64::MAX)), "no estimate, no pass");
+        for _ in 0..LEARN_FRAMES {
+            assert!(
+                !g.admits(1000, || Some(u64::MAX)),
+                "the order's costs learnt first"
+            );
+        }
+        assert!(!g.admits(1000, || None), "no wall clock, no probe");
+        assert!(g.admits(1000, || Some(1)), "then a probe");
         g.learn(1_000_000, 1000); // 1 us a pair
         assert!(!g.admits(1000, || None), "no wall clock, no pass");
         assert!(g.admits(1000, || Some(1_250_000)));
