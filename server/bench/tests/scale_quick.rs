@@ -95,6 +95,12 @@ fn repeated_rounds_report_each_configuration_once_with_its_spread() {
     assert_eq!(md.lines().filter(|l| l.starts_with("| 2,000 |")).count(), 2);
     let table = std::fs::read_to_string(out_dir.join("scale.csv")).expect("scale.csv");
     assert_eq!(table.lines().count(), 5, "{table}");
-    assert!(table.lines().next().is_some_and(|h| h.ends_with(",round")));
+    let header: Vec<&str> = table
+        .lines()
+        .next()
+        .map_or(Vec::new(), |h| h.split(',').collect());
+    for column in ["round", "settled_per_ms", "exact_fit_share"] {
+        assert!(header.contains(&column), "{column} in {header:?}");
+    }
     let _ = std::fs::remove_dir_all(&out_dir);
 }

@@ -100,6 +100,15 @@ impl CostGate {
     }
 }
 
+/// Frames in a row without the exact pass after which one whose estimate is within
+/// [`PROBE_NEAR`] of the time left takes it again (half a second at 60 Hz): at 10,000 bodies
+/// and a 4 ms budget the pass fits with room, yet a first estimate from a cold frame kept the
+/// gate shut for [`PROBE_EVERY`] frames at a time.
+pub const PROBE_NEAR_EVERY: u32 = 30;
+
+/// How far over the time left an estimate may be for [`PROBE_NEAR_EVERY`]'s probe.
+pub const PROBE_NEAR: f64 = 1.5;
+
 /// Headroom the exact narrow phase's expected cost must leave in a wall-clock frame for the
 /// frame to take it ([`ExactGate`]): the frame-to-frame spread of its cost at 10,000 bodies
 /// on two threads (p99 over p50 about 1.1-1.2), so that a frame that takes it does not run
@@ -119,9 +128,11 @@ pub const EXACT_HEADROOM: f64 = 1.25;
 /// budget; the estimate is therefore learnt from every such frame, quick to rise and slow to
 /// fall (the opposite of [`CostGate`]'s). The first estimate comes from an ordered frame that
 /// settled every pair, or else from the frame after the first [`LEARN_FRAMES`] (which learn the
-/// order's costs), which takes the pass to measure it; after [`PROBE_EVERY`] frames in a row
-/// that did not take the pass, one takes it again if its estimate is within twice the time
-/// left (the frame's work may have shrunk).
+/// order's costs), which takes the pass to measure it. Since the estimate falls only in frames
+/// that take the pass, a frame takes it again after [`PROBE_NEAR_EVERY`] frames in a row that
+/// did not if its estimate is within [`PROBE_NEAR`] of the time left (a first measurement in a
+/// cold frame is often the dearest), and after [`PROBE_EVERY`] if within twice it (the frame's
+/// work may have shrunk).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct ExactGate {
     /// Expected ns per candidate pair of the exact narrow phase.
@@ -147,8 +158,10 @@ impl ExactGate {
             Some(_) if probe => true,
             Some((per_pair, left)) => {
                 let cost = per_pair * pairs as f64;
-                cost * EXACT_HEADROOM <= left as f64
-                    || (self.streak >= PROBE_EVERY && cost <= 2.0 * left as f64)
+                let left = left as f64;
+                cost * EXACT_HEADROOM <= left
+                    || (self.streak >= PROBE_NEAR_EVERY && cost <= PROBE_NEAR * left)
+                    || (self.streak >= PROBE_EVERY && cost <= 2.0 * left)
             }
         };
         self.streak = if yes {
@@ -203,7 +216,16 @@ mod tests {
             "0.8 * 2 + 0.2 * 1 = 1.8 us a pair"
         );
         assert!(g.admits(1000, || Some(2_250_000)));
-        // A long streak without the pass probes again, within twice the time left.
+        // A streak without the pass probes again: soon within 1.5 times the time left, after
+        // a long one within twice it.
+        for _ in 0..PROBE_NEAR_EVERY {
+            assert!(!g.admits(1000, || Some(1_250_000)));
+        }
+        assert!(
+            !g.admits(1000, || Some(1_100_000)),
+            "1.8 us a pair is over 1.5x"
+        );
+        assert!(g.admits(1000, || Some(1_250_000)));
         for _ in 0..PROBE_EVERY {
             assert!(!g.admits(1000, || Some(1_000_000)));
         }
