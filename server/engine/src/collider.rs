@@ -564,14 +564,13 @@ impl Collider {
             return;
         }
         let fovea_start = run.clock.now_ns();
-        let work = Work {
-            tree: input.tree,
-            world: input.world,
-            view: None,
-            priorities: &self.priorities,
-            calibration: &self.calibration,
-            threads: self.config.threads as usize,
-        };
+        let work = Work::blind(
+            input.tree,
+            input.world,
+            &self.priorities,
+            &self.calibration,
+            self.config.threads as usize,
+        );
         rings.placed = self
             .rings
             .fovea(
@@ -654,14 +653,13 @@ impl Collider {
         if !roots_first && run.meter.counts_time() {
             settle_roots(&mut self.narrow, input, &mut run.meter);
         }
-        let work = Work {
-            tree: input.tree,
-            world: input.world,
-            view: None,
-            priorities: &self.priorities,
-            calibration: &self.calibration,
-            threads: self.config.threads as usize,
-        };
+        let work = Work::blind(
+            input.tree,
+            input.world,
+            &self.priorities,
+            &self.calibration,
+            self.config.threads as usize,
+        );
         if rings.placed {
             // The rings are placed and the fovea done (settled, or the budget spent on it):
             // round-robin over the rest.

@@ -64,17 +64,7 @@ impl Lane<'_> {
 
     /// Advance pair `i` by one level of one tree, in the widest [`Kernel`] the processor has.
     pub(super) fn step(&mut self, i: usize, tree: &SphereTree, world: &World) -> StepOutcome {
-        #[cfg(target_arch = "x86_64")]
-        if let Some(simd) = V3::try_new().filter(|_| self.wide) {
-            return simd.vectorize(OnePair::<false> {
-                lane: self,
-                simd,
-                i,
-                tree,
-                world,
-            });
-        }
-        self.step_in(Baseline, i, tree, world)
+        self.one_pair::<false>(i, tree, world)
     }
 
     /// Step pair `i` until it is resolved ([`Self::resolve_pair_in`]), in the widest
@@ -85,9 +75,20 @@ impl Lane<'_> {
         tree: &SphereTree,
         world: &World,
     ) -> StepOutcome {
+        self.one_pair::<true>(i, tree, world)
+    }
+
+    /// Pair `i`'s step, or (`WHOLE`) its whole descent, in the widest [`Kernel`] the processor
+    /// has (see [`OnePair`]).
+    fn one_pair<const WHOLE: bool>(
+        &mut self,
+        i: usize,
+        tree: &SphereTree,
+        world: &World,
+    ) -> StepOutcome {
         #[cfg(target_arch = "x86_64")]
         if let Some(simd) = V3::try_new().filter(|_| self.wide) {
-            return simd.vectorize(OnePair::<true> {
+            return simd.vectorize(OnePair::<WHOLE> {
                 lane: self,
                 simd,
                 i,
@@ -95,7 +96,11 @@ impl Lane<'_> {
                 world,
             });
         }
-        self.resolve_pair_in(Baseline, i, tree, world)
+        if WHOLE {
+            self.resolve_pair_in(Baseline, i, tree, world)
+        } else {
+            self.step_in(Baseline, i, tree, world)
+        }
     }
 
     /// Resolve every open pair of the lane in one go, each pair's state first written from

@@ -50,6 +50,26 @@ pub struct Work<'a> {
     pub threads: usize,
 }
 
+impl<'a> Work<'a> {
+    /// What a gaze-blind pass may read: no view.
+    pub fn blind(
+        tree: &'a SphereTree,
+        world: &'a World,
+        priorities: &'a Priorities,
+        calibration: &'a calibration::Calibration,
+        threads: usize,
+    ) -> Self {
+        Self {
+            tree,
+            world,
+            view: None,
+            priorities,
+            calibration,
+            threads,
+        }
+    }
+}
+
 /// When a scheduler's order needs the frame's prioritisation (see [`priority`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Prioritise {
