@@ -112,8 +112,6 @@ pub struct Collider {
     ordering_cost: CostGate,
     /// Whether a wall-clock frame can afford the exact pass outright.
     exact_gate: ExactGate,
-    /// The candidates in order, for the rest of a frame whose broad phase has regions.
-    rest_order: Vec<u32>,
     /// The last foveal pass: pairs it settled and the time it took (ns).
     foveal_pass: Option<(u32, u64)>,
     /// The last frame's foveal pairs, when its foveal pass selected exactly the pairs the
@@ -187,7 +185,6 @@ impl Collider {
             rings_cost: CostGate::default(),
             ordering_cost: CostGate::default(),
             exact_gate: ExactGate::default(),
-            rest_order: Vec::new(),
             foveal_pass: None,
             foveal_known: None,
             foveal_marked: false,
@@ -395,23 +392,21 @@ impl Collider {
             fixation_px,
         ) {
             self.fovea_pass(input, &mut run, prefix, px, whole_fovea);
-            // At large N the rest is settled whole in candidate order, which is the regions'
-            // order and so the gaze order, on the exact pass's kernels and threads (see
-            // `NarrowPhase::resolve_ordered`; round-robin, a level a pair a round on one
-            // thread, settled about 0.6x the pairs per millisecond at 100,000 bodies); over
-            // every candidate, the ordering below spends it.
+            // At large N round-robin spends the rest (the regions are the gaze order; its first
+            // round tests every pair's roots, the cheapest error removed, and settled more pairs a
+            // millisecond than whole pairs in region order at 100,000 bodies: 0.68x the exact
+            // pass's against 0.50x, docs/BENCHMARKS.md); over every candidate, the ordering
+            // below spends it.
             if !whole_fovea {
                 self.priorities.clear();
-                self.rest_order.clear();
-                self.rest_order.extend(0..run.n as u32);
-                let meter = &mut run.meter;
-                self.narrow.resolve_ordered(
+                let work = Work::blind(
                     input.tree,
                     input.world,
-                    &self.rest_order,
+                    &self.priorities,
+                    &self.calibration,
                     self.config.threads as usize,
-                    &mut |tests| !meter.exhausted(tests),
                 );
+                self.fallback.run(&mut self.narrow, &work, &mut run.meter);
                 self.scheduler.forget();
                 let deemed = self.narrow.close_frame(input.world.len());
                 profile.prioritise_ns = 0;
