@@ -1115,7 +1115,7 @@ mod tests {
         ] {
             cfg.scheduler = kind;
             let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
-            for budget in [FrameBudget::Wall(40_000), FrameBudget::Tests(50)] {
+            for budget in [FrameBudget::Wall(25_000), FrameBudget::Tests(50)] {
                 let r = col.evaluate(&input, fixation, budget, &clock);
                 assert!(r.budget_exhausted, "{kind:?} {budget:?}");
                 let settled = settled(&col);
@@ -1177,7 +1177,7 @@ mod tests {
         let mut first = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
         let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 1_000);
         let (mut shown, mut by_rings) = (0, 0);
-        for budget_us in [5, 20, 50, 100, 200, 400, 800] {
+        for budget_us in [5, 10, 20, 30, 40, 50, 65, 80, 100, 150, 200, 400, 800] {
             let budget = FrameBudget::Wall(budget_us * 1_000);
             let (a, b) = (
                 plain.evaluate(&input, fixation, budget, &clock),

@@ -454,11 +454,11 @@ impl Priced {
     /// the frame's threads and the exact frame's kernels, asking the meter between pairs
     /// ([`NarrowPhase::resolve_ordered`]). Why not step by step as under a sphere-test
     /// budget: there a step is the unit of account, and re-pricing after each one spends it
-    /// where it buys the most; against a clock a step through the queue costs 4-20 ns a sphere
-    /// test against 2.4-3.2 ns inside a whole descent, so the finer order bought fewer settled
-    /// pairs than it lost (at 10,000 bodies a 4 ms frame deemed 1,350 pairs where the exact
-    /// frame takes 1.8 ms). An untested pair's first price is already its whole descent's
-    /// (expected gap removed over expected tests to settle it, see [`Bin::cost`]).
+    /// where it buys the most; against a clock each step loads the pair, its frame and its list,
+    /// prices it again and puts it back, on one thread, while whole pairs run as the exact
+    /// pass's descents do, on every thread. An untested pair's first price is already its
+    /// whole descent's (expected gap removed over expected tests to settle it, see
+    /// [`Bin::cost`]), so the order is the same.
     fn run_whole(&mut self, np: &mut NarrowPhase, work: &Work<'_>, meter: &mut Meter<'_>) {
         self.order.clear();
         self.order
@@ -468,7 +468,7 @@ impl Priced {
             work.world,
             &self.order,
             work.threads,
-            &mut |tests| !meter.exhausted(tests),
+            &mut |tests| !meter.exhausted_between_pairs(tests),
         );
     }
 

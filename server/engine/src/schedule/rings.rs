@@ -231,7 +231,7 @@ impl Rings {
             work.world,
             &self.order,
             work.threads,
-            &mut |tests| !meter.exhausted(tests),
+            &mut |tests| !meter.exhausted_between_pairs(tests),
         ))
     }
 
