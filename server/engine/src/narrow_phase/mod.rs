@@ -79,6 +79,64 @@ pub fn threads_for(pairs: usize, threads: usize) -> usize {
     }
 }
 
+/// One thread's lane storage: its scratch arena and the two lists a descent alternates between.
+type LaneStore<'a> = (&'a mut Vec<[u16; 2]>, &'a mut [Vec<[u16; 2]>; 2]);
+
+/// One thread's share of a parallel pass (see [`share_out`]): its lane storage and the check
+/// it asks before each piece of work, which says whether to go on.
+type ShareWork<'w, S> = dyn Fn(LaneStore<'_>, &mut dyn FnMut(u64) -> bool) -> S + Sync + 'w;
+
+/// Run `work` on the calling thread (with `first`) and on a thread of the pool for each of
+/// `others`; return each one's result, the calling thread's first, and whether `go_on` said
+/// stop. The calling thread alone asks `go_on` (the clock need not be shared), with what its
+/// `work` hands its check; the others see a stop at their next check. Once the calling thread's
+/// `work` returns, it keeps asking `go_on` (with the last value it was handed) while the others
+/// run: only those running, since one not yet started finds no work when it starts, and may be
+/// the calling thread's to run at the scope's end (waiting for it could wait for ever).
+fn share_out<S: Send>(
+    first: LaneStore<'_>,
+    others: Vec<LaneStore<'_>>,
+    work: &ShareWork<'_, S>,
+    go_on: &mut dyn FnMut(u64) -> bool,
+) -> (Vec<S>, bool) {
+    let stop = std::sync::atomic::AtomicBool::new(false);
+    let running = AtomicUsize::new(0);
+    let mut theirs: Vec<Option<S>> = others.iter().map(|_| None).collect();
+    let mut mine = None;
+    rayon::in_place_scope(|s| {
+        let (stop, running) = (&stop, &running);
+        for (store, slot) in others.into_iter().zip(theirs.iter_mut()) {
+            s.spawn(move |_| {
+                running.fetch_add(1, Ordering::AcqRel);
+                *slot = Some(work(store, &mut |_| !stop.load(Ordering::Relaxed)));
+                running.fetch_sub(1, Ordering::AcqRel);
+            });
+        }
+        let mut last = 0;
+        mine = Some(work(first, &mut |x| {
+            last = x;
+            let more = !stop.load(Ordering::Relaxed) && go_on(x);
+            if !more {
+                stop.store(true, Ordering::Relaxed);
+            }
+            more
+        }));
+        while !stop.load(Ordering::Relaxed) && running.load(Ordering::Acquire) > 0 {
+            if !go_on(last) {
+                stop.store(true, Ordering::Relaxed);
+            }
+            std::hint::spin_loop();
+        }
+    });
+    let stopped = stop.into_inner();
+    (
+        mine.into_iter()
+            .chain(theirs.into_iter().flatten())
+            .collect(),
+        stopped,
+    )
+}
+
 /// What [`NarrowPhase::resolve_frame_tallied`] does with each block of pairs it has just
 /// resolved: add what it needs of them to the run's accumulator.
 pub type Tally<'a, T> = &'a (dyn Fn(&[PairState], &mut T) + Sync);
@@ -593,12 +651,7 @@ impl NarrowPhase {
         // at every level from both threads would bounce its cache line between the cores.
         let per_body = size_of::<Vec3>() + size_of::<LMat3>() + size_of::<Witness>();
         let warm = parts > 1 && world.len() * per_body <= WARM_MAX_BYTES;
-        let stop = std::sync::atomic::AtomicBool::new(false);
-        let running = AtomicUsize::new(0);
-        let work = |arena: &mut Vec<[u16; 2]>,
-                    scratch: &mut [Vec<[u16; 2]>; 2],
-                    check: &mut dyn FnMut() -> bool|
-         -> u64 {
+        let work = |(arena, scratch): LaneStore<'_>, check: &mut dyn FnMut(u64) -> bool| -> u64 {
             if warm {
                 warm_bodies(world, witness);
             }
@@ -632,7 +685,7 @@ impl NarrowPhase {
                     tree,
                     world,
                     tally.map(|f| (f, &mut *acc)),
-                    check,
+                    &mut || check(0),
                 );
                 if *done < lane.pairs.len() {
                     break;
@@ -642,43 +695,18 @@ impl NarrowPhase {
         };
         // The calling thread alone asks `go_on`; the others see its stop at their next block.
         let mut go_on = go_on;
-        let mut ask = || {
-            if stop.load(Ordering::Relaxed) {
-                return false;
-            }
-            let more = go_on.as_mut().is_none_or(|go_on| go_on());
-            if !more {
-                stop.store(true, Ordering::Relaxed);
-            }
-            more
-        };
-        let mut counts = vec![0u64; parts];
-        if parts == 1 {
-            counts[0] = work(&mut first_arena, &mut self.scratch, &mut ask);
-        } else {
-            rayon::in_place_scope(|s| {
-                let work = &work;
-                let (stop, running) = (&stop, &running);
-                let (mine, others) = counts.split_at_mut(1);
-                let lanes = self
-                    .lane_arenas
-                    .iter_mut()
-                    .zip(self.lane_scratch.iter_mut());
-                for ((arena, scratch), count) in lanes.zip(others) {
-                    s.spawn(move |_| {
-                        running.fetch_add(1, Ordering::AcqRel);
-                        *count = work(arena, scratch, &mut || !stop.load(Ordering::Relaxed));
-                        running.fetch_sub(1, Ordering::AcqRel);
-                    });
-                }
-                mine[0] = work(&mut first_arena, &mut self.scratch, &mut ask);
-                // No run is left to take: watch the budget while the others finish theirs
-                // (only those running, as in `resolve_selected`).
-                while running.load(Ordering::Acquire) > 0 && ask() {
-                    std::hint::spin_loop();
-                }
-            });
-        }
+        let others = self
+            .lane_arenas
+            .iter_mut()
+            .zip(self.lane_scratch.iter_mut())
+            .take(parts - 1)
+            .collect();
+        let (counts, stopped) = share_out(
+            (&mut first_arena, &mut self.scratch),
+            others,
+            &work,
+            &mut |_| go_on.as_mut().is_none_or(|go_on| go_on()),
+        );
         self.arena = first_arena;
         self.tests += counts.iter().sum::<u64>();
         let runs: Vec<Run<'_, T>> = runs
@@ -688,7 +716,7 @@ impl NarrowPhase {
                     .unwrap_or_else(std::sync::PoisonError::into_inner)
             })
             .collect();
-        if stop.load(Ordering::Relaxed) {
+        if stopped {
             // The pairs no run went through get their fresh states, for the caller to deem.
             for (_, (pairs, _), cands, _, _, _, done) in runs {
                 for (p, &(a, b)) in pairs.iter_mut().zip(cands).skip(done) {
@@ -798,84 +826,57 @@ impl NarrowPhase {
             .map(Mutex::new)
             .collect();
         let next = AtomicUsize::new(0);
-        let stop = std::sync::atomic::AtomicBool::new(false);
-        let running = AtomicUsize::new(0);
         let tests_before = self.tests;
         // One thread's share: (sphere tests, pairs resolved). `check` is asked before each pair.
-        let work = |arena: &mut Vec<[u16; 2]>,
-                    scratch: &mut [Vec<[u16; 2]>; 2],
-                    check: &mut dyn FnMut(u64) -> bool|
-         -> (u64, u32) {
-            let (mut count, mut settled) = (0u64, 0u32);
-            'runs: while let Some(run) = runs.get(next.fetch_add(1, Ordering::Relaxed)) {
-                let mut guard = run
-                    .lock()
-                    .unwrap_or_else(std::sync::PoisonError::into_inner);
-                let ((pairs, memos), marks) = &mut *guard;
-                let mut slot = [PairFrame::IDENTITY];
-                let mut lane = Lane {
-                    pairs,
-                    near: near_table,
-                    memo_out: memos,
-                    frames: &mut slot,
-                    one_frame: true,
-                    wide,
-                    arena: &mut *arena,
-                    scratch: &mut *scratch,
-                    witness,
-                    tests: &mut count,
-                };
-                for i in 0..lane.pairs.len() {
-                    let p = lane.pairs[i];
-                    if !mark(&p, &mut marks[i]) {
-                        continue;
+        let work =
+            |(arena, scratch): LaneStore<'_>, check: &mut dyn FnMut(u64) -> bool| -> (u64, u32) {
+                let (mut count, mut settled) = (0u64, 0u32);
+                'runs: while let Some(run) = runs.get(next.fetch_add(1, Ordering::Relaxed)) {
+                    let mut guard = run
+                        .lock()
+                        .unwrap_or_else(std::sync::PoisonError::into_inner);
+                    let ((pairs, memos), marks) = &mut *guard;
+                    let mut slot = [PairFrame::IDENTITY];
+                    let mut lane = Lane {
+                        pairs,
+                        near: near_table,
+                        memo_out: memos,
+                        frames: &mut slot,
+                        one_frame: true,
+                        wide,
+                        arena: &mut *arena,
+                        scratch: &mut *scratch,
+                        witness,
+                        tests: &mut count,
+                    };
+                    for i in 0..lane.pairs.len() {
+                        let p = lane.pairs[i];
+                        if !mark(&p, &mut marks[i]) {
+                            continue;
+                        }
+                        if !check(*lane.tests) {
+                            break 'runs;
+                        }
+                        lane.resolve_pair(i, tree, world);
+                        lane.arena.clear();
+                        settled += 1;
                     }
-                    if !check(*lane.tests) {
-                        break 'runs;
-                    }
-                    lane.resolve_pair(i, tree, world);
-                    lane.arena.clear();
-                    settled += 1;
                 }
-            }
-            (count, settled)
-        };
-        let mut done = vec![(0u64, 0u32); parts];
-        rayon::in_place_scope(|s| {
-            let work = &work;
-            let (stop, running) = (&stop, &running);
-            let (mine, others) = done.split_at_mut(1);
-            let lanes = self
-                .lane_arenas
-                .iter_mut()
-                .zip(self.lane_scratch.iter_mut());
-            for ((arena, scratch), out) in lanes.zip(others) {
-                s.spawn(move |_| {
-                    running.fetch_add(1, Ordering::AcqRel);
-                    *out = work(arena, scratch, &mut |_| !stop.load(Ordering::Relaxed));
-                    running.fetch_sub(1, Ordering::AcqRel);
-                });
-            }
-            // The calling thread alone reads the budget (the clock need not be shared); the
-            // tests it is shown are its own plus those done before the pass.
-            mine[0] = work(&mut first_arena, &mut self.scratch, &mut |t| {
-                let more = !stop.load(Ordering::Relaxed) && go_on(tests_before + t);
-                if !more {
-                    stop.store(true, Ordering::Relaxed);
-                }
-                more
-            });
-            // No run is left to take: watch the budget while the others finish theirs. A share
-            // not yet started when this looks finds no run when it starts, so only those
-            // running are waited for (waiting for one not started could wait for ever: it may
-            // be this thread that runs it, at the scope's end).
-            while !stop.load(Ordering::Relaxed) && running.load(Ordering::Acquire) > 0 {
-                if !go_on(tests_before + mine[0].0) {
-                    stop.store(true, Ordering::Relaxed);
-                }
-                std::hint::spin_loop();
-            }
-        });
+                (count, settled)
+            };
+        let others = self
+            .lane_arenas
+            .iter_mut()
+            .zip(self.lane_scratch.iter_mut())
+            .take(parts - 1)
+            .collect();
+        // The tests the calling thread is shown are its own plus those done before the pass.
+        let (done, _) = share_out(
+            (&mut first_arena, &mut self.scratch),
+            others,
+            &work,
+            &mut |t| go_on(tests_before + t),
+        );
         let (tests, settled) = done
             .iter()
             .fold((0, 0), |(t, k), &(dt, dk)| (t + dt, k + dk));
@@ -947,8 +948,6 @@ impl NarrowPhase {
         let shape = leaves.is_some();
         let mut first_arena = std::mem::take(&mut self.arena);
         let next = AtomicUsize::new(0);
-        let stop = std::sync::atomic::AtomicBool::new(false);
-        let running = AtomicUsize::new(0);
         let finished_tests = std::sync::atomic::AtomicU64::new(0);
         let tests_before = self.tests;
         // One thread's share: each chunk's untested pairs are copied out, resolved in a lane of
@@ -961,10 +960,7 @@ impl NarrowPhase {
             states: Vec<(u32, PairState)>,
             memos: Vec<(u32, Memo)>,
         }
-        let work = |arena: &mut Vec<[u16; 2]>,
-                    scratch: &mut [Vec<[u16; 2]>; 2],
-                    check: &mut dyn FnMut(u64) -> bool|
-         -> Share {
+        let work = |(arena, scratch): LaneStore<'_>, check: &mut dyn FnMut(u64) -> bool| -> Share {
             let mut share = Share::default();
             let mut buf: Vec<PairState> = Vec::with_capacity(ORDER_CHUNK);
             let mut memo_buf = vec![Memo::EMPTY; if shape { ORDER_CHUNK } else { 0 }];
@@ -1017,41 +1013,21 @@ impl NarrowPhase {
             }
             share
         };
-        let mut shares: Vec<Share> = (0..parts).map(|_| Share::default()).collect();
-        rayon::in_place_scope(|s| {
-            let work = &work;
-            let (stop, running, finished_tests) = (&stop, &running, &finished_tests);
-            let (mine, others) = shares.split_at_mut(1);
-            let lanes = self
-                .lane_arenas
-                .iter_mut()
-                .zip(self.lane_scratch.iter_mut());
-            for ((arena, scratch), out) in lanes.zip(others) {
-                s.spawn(move |_| {
-                    running.fetch_add(1, Ordering::AcqRel);
-                    *out = work(arena, scratch, &mut |_| !stop.load(Ordering::Relaxed));
-                    running.fetch_sub(1, Ordering::AcqRel);
-                });
-            }
-            // The calling thread alone reads the budget: every thread's tests of the chunks
-            // finished and its own of the chunk under way.
-            let mut ask = |mine: u64| {
-                let more = !stop.load(Ordering::Relaxed)
-                    && go_on(tests_before + finished_tests.load(Ordering::Relaxed) + mine);
-                if !more {
-                    stop.store(true, Ordering::Relaxed);
-                }
-                more
-            };
-            mine[0] = work(&mut first_arena, &mut self.scratch, &mut ask);
-            // No chunk is left to take: watch the budget while the others finish theirs (only
-            // those running: one not started finds no chunk when it starts, and may be this
-            // thread's to run at the scope's end).
-            while !stop.load(Ordering::Relaxed) && running.load(Ordering::Acquire) > 0 {
-                ask(0);
-                std::hint::spin_loop();
-            }
-        });
+        let others = self
+            .lane_arenas
+            .iter_mut()
+            .zip(self.lane_scratch.iter_mut())
+            .take(parts - 1)
+            .collect();
+        // The calling thread is shown every thread's tests of the chunks finished and its own
+        // of the chunk under way (while it waits for the others, its last chunk's count once
+        // more: a stop a little early, and only under a budget of tests).
+        let (shares, _) = share_out(
+            (&mut first_arena, &mut self.scratch),
+            others,
+            &work,
+            &mut |mine| go_on(tests_before + finished_tests.load(Ordering::Relaxed) + mine),
+        );
         self.arena = first_arena;
         let mut all = true;
         for share in &shares {
