@@ -614,8 +614,11 @@ impl NarrowPhase {
         }
         self.note_tree(tree);
         self.make_lanes(parts);
-        let (witness, wide) = (&self.witness, !self.four_lanes_only);
-        let near_table = &self.near;
+        let shared = LaneShared {
+            near: &self.near,
+            witness: &self.witness,
+            wide: !self.four_lanes_only,
+        };
         let mut first_arena = std::mem::take(&mut self.arena);
         let candidates: Box<dyn Iterator<Item = &[(u32, u32)]>> = match fresh {
             Some(c) => Box::new(c.chunks(size)),
@@ -653,7 +656,7 @@ impl NarrowPhase {
         let warm = parts > 1 && world.len() * per_body <= WARM_MAX_BYTES;
         let work = |(arena, scratch): LaneStore<'_>, check: &mut dyn FnMut(u64) -> bool| -> u64 {
             if warm {
-                warm_bodies(world, witness);
+                warm_bodies(world, shared.witness);
             }
             let mut count = 0u64;
             while let Some(run) = runs.get(next.fetch_add(1, Ordering::Relaxed)) {
@@ -666,18 +669,14 @@ impl NarrowPhase {
                 hits.clear();
                 near.clear();
                 let mut slot = [PairFrame::IDENTITY];
-                let mut lane = Lane {
+                let mut lane = Lane::one_at_a_time(
                     pairs,
-                    near: near_table,
-                    memo_out: memos,
-                    frames: &mut slot,
-                    one_frame: true,
-                    wide,
-                    arena: &mut *arena,
-                    scratch: &mut *scratch,
-                    witness,
-                    tests: &mut count,
-                };
+                    memos,
+                    &mut slot,
+                    shared,
+                    (&mut *arena, &mut *scratch),
+                    &mut count,
+                );
                 *done = lane.resolve_run(
                     cands,
                     base,
@@ -810,8 +809,11 @@ impl NarrowPhase {
         }
         let size = (n / (parts * RUNS_PER_THREAD)).clamp(MIN_RUN, MAX_RUN);
         self.make_lanes(parts);
-        let (witness, wide) = (&self.witness, !self.four_lanes_only);
-        let near_table = &self.near;
+        let shared = LaneShared {
+            near: &self.near,
+            witness: &self.witness,
+            wide: !self.four_lanes_only,
+        };
         let mut first_arena = std::mem::take(&mut self.arena);
         type Sel<'a> = ((&'a mut [PairState], &'a mut [Memo]), &'a mut [u8]);
         let runs: Vec<Mutex<Sel<'_>>> = self.pairs[..n]
@@ -837,18 +839,14 @@ impl NarrowPhase {
                         .unwrap_or_else(std::sync::PoisonError::into_inner);
                     let ((pairs, memos), marks) = &mut *guard;
                     let mut slot = [PairFrame::IDENTITY];
-                    let mut lane = Lane {
+                    let mut lane = Lane::one_at_a_time(
                         pairs,
-                        near: near_table,
-                        memo_out: memos,
-                        frames: &mut slot,
-                        one_frame: true,
-                        wide,
-                        arena: &mut *arena,
-                        scratch: &mut *scratch,
-                        witness,
-                        tests: &mut count,
-                    };
+                        memos,
+                        &mut slot,
+                        shared,
+                        (&mut *arena, &mut *scratch),
+                        &mut count,
+                    );
                     for i in 0..lane.pairs.len() {
                         let p = lane.pairs[i];
                         if !mark(&p, &mut marks[i]) {
@@ -919,18 +917,18 @@ impl NarrowPhase {
         };
         if parts == 1 {
             let mut slot = [PairFrame::IDENTITY];
-            let mut lane = Lane {
-                pairs: &mut self.pairs,
-                near: &self.near,
-                memo_out: &mut self.memo_out,
-                frames: &mut slot,
-                one_frame: true,
-                wide: !self.four_lanes_only,
-                arena: &mut self.arena,
-                scratch: &mut self.scratch,
-                witness: &self.witness,
-                tests: &mut self.tests,
-            };
+            let mut lane = Lane::one_at_a_time(
+                &mut self.pairs,
+                &mut self.memo_out,
+                &mut slot,
+                LaneShared {
+                    near: &self.near,
+                    witness: &self.witness,
+                    wide: !self.four_lanes_only,
+                },
+                (&mut self.arena, &mut self.scratch),
+                &mut self.tests,
+            );
             for &i in order {
                 if !untested(&lane.pairs[i as usize]) {
                     continue;
@@ -943,8 +941,12 @@ impl NarrowPhase {
             return true;
         }
         self.make_lanes(parts);
-        let (witness, wide, leaves) = (&self.witness, !self.four_lanes_only, self.leaf_start);
-        let (near_table, pairs) = (&self.near, &self.pairs[..]);
+        let shared = LaneShared {
+            near: &self.near,
+            witness: &self.witness,
+            wide: !self.four_lanes_only,
+        };
+        let (leaves, pairs) = (self.leaf_start, &self.pairs[..]);
         let shape = leaves.is_some();
         let mut first_arena = std::mem::take(&mut self.arena);
         let next = AtomicUsize::new(0);
@@ -981,18 +983,14 @@ impl NarrowPhase {
                 }
                 let before = share.tests;
                 let mut slot = [PairFrame::IDENTITY];
-                let mut lane = Lane {
-                    pairs: &mut buf,
-                    near: near_table,
-                    memo_out: &mut memo_buf,
-                    frames: &mut slot,
-                    one_frame: true,
-                    wide,
-                    arena: &mut *arena,
-                    scratch: &mut *scratch,
-                    witness,
-                    tests: &mut share.tests,
-                };
+                let mut lane = Lane::one_at_a_time(
+                    &mut buf,
+                    &mut memo_buf,
+                    &mut slot,
+                    shared,
+                    (&mut *arena, &mut *scratch),
+                    &mut share.tests,
+                );
                 let mut resolved = 0;
                 while resolved < lane.pairs.len() {
                     if !check(*lane.tests - before) {

@@ -55,6 +55,43 @@ impl<const WHOLE: bool> pulp::NullaryFnOnce for OnePair<'_, '_, '_, WHOLE> {
     }
 }
 
+/// What every lane of a pass reads alike.
+#[derive(Clone, Copy)]
+pub(super) struct LaneShared<'a> {
+    /// Last frame's near misses (shape truth).
+    pub(super) near: &'a NearTable,
+    /// Last frame's witnesses.
+    pub(super) witness: &'a [Witness],
+    /// Test eight children at a time where the processor can ([`Avx2`]).
+    pub(super) wide: bool,
+}
+
+impl<'a> Lane<'a> {
+    /// A lane whose pairs are resolved one at a time, each in one go, every pair's frame kept
+    /// in `slot`: the lanes of the parallel passes, each with its own storage.
+    pub(super) fn one_at_a_time(
+        pairs: &'a mut [PairState],
+        memo_out: &'a mut [Memo],
+        slot: &'a mut [PairFrame; 1],
+        shared: LaneShared<'a>,
+        (arena, scratch): LaneStore<'a>,
+        tests: &'a mut u64,
+    ) -> Self {
+        Self {
+            pairs,
+            near: shared.near,
+            memo_out,
+            frames: slot,
+            one_frame: true,
+            wide: shared.wide,
+            arena,
+            scratch,
+            witness: shared.witness,
+            tests,
+        }
+    }
+}
+
 impl Lane<'_> {
     /// Where pair `i`'s frame is kept.
     #[inline]
