@@ -349,13 +349,16 @@ impl Collider {
         // A wall-clock frame whose budget is expected to cover the exact pass takes it: no
         // order beats it. Cut short (the expectation was wrong), it is learnt from at the
         // rate it went.
+        // The meter the gate asks is the one the pass then runs under (made only when asked:
+        // a wall-clock meter reads the clock).
         let n = input.candidates.len();
+        let mut asked = None;
         if self.config.exact_when_affordable
             && self
                 .exact_gate
-                .admits(n, || Meter::new(budget, clock).wall_left_ns())
+                .admits(n, || asked.insert(Meter::new(budget, clock)).wall_left_ns())
+            && let Some(mut meter) = asked
         {
-            let mut meter = Meter::new(budget, clock);
             let all = self.exact_pass(input, frame, r, profile, t0, Some(&mut meter));
             let spent = clock.now_ns().saturating_sub(t0);
             let reached = if all { n } else { n - r.deemed as usize };

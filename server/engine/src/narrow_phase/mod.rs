@@ -82,23 +82,32 @@ pub fn threads_for(pairs: usize, threads: usize) -> usize {
 /// One thread's lane storage: its scratch arena and the two lists a descent alternates between.
 type LaneStore<'a> = (&'a mut Vec<[u16; 2]>, &'a mut [Vec<[u16; 2]>; 2]);
 
+/// The extra lanes' storage, as kept between frames: their arenas and their lists.
+type ExtraLanes<'a> = (&'a mut [Vec<[u16; 2]>], &'a mut [[Vec<[u16; 2]>; 2]]);
+
 /// One thread's share of a parallel pass (see [`share_out`]): its lane storage and the check
 /// it asks before each piece of work, which says whether to go on.
 type ShareWork<'w, S> = dyn Fn(LaneStore<'_>, &mut dyn FnMut(u64) -> bool) -> S + Sync + 'w;
 
-/// Run `work` on the calling thread (with `first`) and on a thread of the pool for each of
-/// `others`; return each one's result, the calling thread's first, and whether `go_on` said
-/// stop. The calling thread alone asks `go_on` (the clock need not be shared), with what its
+/// Run `work` on the calling thread (with `first`) and on a thread of the pool for each of the
+/// first `parts - 1` stores of `lanes` (the extra lanes' arenas and lists); return each one's
+/// result, the calling thread's first, and whether `go_on` said stop. The calling thread alone asks `go_on` (the clock need not be shared), with what its
 /// `work` hands its check; the others see a stop at their next check. Once the calling thread's
 /// `work` returns, it keeps asking `go_on` (with the last value it was handed) while the others
 /// run: only those running, since one not yet started finds no work when it starts, and may be
 /// the calling thread's to run at the scope's end (waiting for it could wait for ever).
 fn share_out<S: Send>(
     first: LaneStore<'_>,
-    others: Vec<LaneStore<'_>>,
+    (arenas, lists): ExtraLanes<'_>,
+    parts: usize,
     work: &ShareWork<'_, S>,
     go_on: &mut dyn FnMut(u64) -> bool,
 ) -> (Vec<S>, bool) {
+    let others: Vec<LaneStore<'_>> = arenas
+        .iter_mut()
+        .zip(lists.iter_mut())
+        .take(parts.saturating_sub(1))
+        .collect();
     let stop = std::sync::atomic::AtomicBool::new(false);
     let running = AtomicUsize::new(0);
     let mut theirs: Vec<Option<S>> = others.iter().map(|_| None).collect();
@@ -694,15 +703,10 @@ impl NarrowPhase {
         };
         // The calling thread alone asks `go_on`; the others see its stop at their next block.
         let mut go_on = go_on;
-        let others = self
-            .lane_arenas
-            .iter_mut()
-            .zip(self.lane_scratch.iter_mut())
-            .take(parts - 1)
-            .collect();
         let (counts, stopped) = share_out(
             (&mut first_arena, &mut self.scratch),
-            others,
+            (&mut self.lane_arenas, &mut self.lane_scratch),
+            parts,
             &work,
             &mut |_| go_on.as_mut().is_none_or(|go_on| go_on()),
         );
@@ -862,16 +866,11 @@ impl NarrowPhase {
                 }
                 (count, settled)
             };
-        let others = self
-            .lane_arenas
-            .iter_mut()
-            .zip(self.lane_scratch.iter_mut())
-            .take(parts - 1)
-            .collect();
         // The tests the calling thread is shown are its own plus those done before the pass.
         let (done, _) = share_out(
             (&mut first_arena, &mut self.scratch),
-            others,
+            (&mut self.lane_arenas, &mut self.lane_scratch),
+            parts,
             &work,
             &mut |t| go_on(tests_before + t),
         );
@@ -1011,18 +1010,13 @@ impl NarrowPhase {
             }
             share
         };
-        let others = self
-            .lane_arenas
-            .iter_mut()
-            .zip(self.lane_scratch.iter_mut())
-            .take(parts - 1)
-            .collect();
         // The calling thread is shown every thread's tests of the chunks finished and its own
         // of the chunk under way (while it waits for the others, its last chunk's count once
         // more: a stop a little early, and only under a budget of tests).
         let (shares, _) = share_out(
             (&mut first_arena, &mut self.scratch),
-            others,
+            (&mut self.lane_arenas, &mut self.lane_scratch),
+            parts,
             &work,
             &mut |mine| go_on(tests_before + finished_tests.load(Ordering::Relaxed) + mine),
         );
