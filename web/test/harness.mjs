@@ -133,6 +133,12 @@ export async function startServer(port, args, tls) {
 
 export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 
+/** Push every console error and uncaught exception of `page` onto `errors`. */
+export function recordErrors(page, errors) {
+  page.on("console", (m) => m.type() === "error" && errors.push(m.text()));
+  page.on("pageerror", (e) => errors.push(String(e)));
+}
+
 /** Poll `f` until it returns a truthy value or `ms` pass; returns the value or null. */
 export async function waitFor(f, ms, every = 20) {
   const until = Date.now() + ms;

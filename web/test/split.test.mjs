@@ -11,7 +11,7 @@ import assert from "node:assert/strict";
 import { mkdirSync } from "node:fs";
 import { join } from "node:path";
 import { after, before, describe, test } from "node:test";
-import { freePort, launch, missing, repo, sleep, startServer, waitFor } from "./harness.mjs";
+import { freePort, launch, missing, recordErrors, repo, sleep, startServer, waitFor } from "./harness.mjs";
 
 const skip = missing() ?? false;
 
@@ -23,8 +23,7 @@ describe("side by side (N = 2,000, 3,000 sphere tests)", { skip }, () => {
     server = await startServer(await freePort(), ["-n", "2000", "--budget", "3000tests"]);
     browser = await launch();
     page = await browser.browser.newPage();
-    page.on("console", (m) => m.type() === "error" && consoleErrors.push(m.text()));
-    page.on("pageerror", (e) => consoleErrors.push(String(e)));
+    recordErrors(page, consoleErrors);
     await page.goto(server.url);
   });
 

@@ -7,7 +7,7 @@ import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { after, before, describe, test } from "node:test";
-import { freePort, launch, missing, startServer, waitFor } from "./harness.mjs";
+import { freePort, launch, missing, recordErrors, startServer, waitFor } from "./harness.mjs";
 
 /** A CA and a certificate it signed for localhost, made with the openssl command; null without it. */
 function certificates() {
@@ -45,8 +45,7 @@ describe("viewer over https:// and HTTP/1.1", { skip }, () => {
     // what this test is about. HTTP/2 off: only ALPN's http/1.1 can carry the page and calls.
     browser = await launch(["--disable-http2"], { ignoreHTTPSErrors: true });
     page = await browser.browser.newPage();
-    page.on("console", (m) => m.type() === "error" && consoleErrors.push(m.text()));
-    page.on("pageerror", (e) => consoleErrors.push(String(e)));
+    recordErrors(page, consoleErrors);
     await page.goto(server.url);
   });
 

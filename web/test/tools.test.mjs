@@ -7,7 +7,7 @@
 // page backs off (its calls are counted) and comes back when the server does.
 import assert from "node:assert/strict";
 import { after, before, describe, test } from "node:test";
-import { clientModule, freePort, launch, missing, sleep, startServer, waitFor } from "./harness.mjs";
+import { clientModule, freePort, launch, missing, recordErrors, sleep, startServer, waitFor } from "./harness.mjs";
 
 const skip = missing() ?? false;
 
@@ -58,8 +58,7 @@ describe("viewer's loop controls and picking (N = 400, 300 sphere tests)", { ski
     rpc = rpc(server.url);
     browser = await launch();
     page = await browser.browser.newPage();
-    page.on("console", (m) => m.type() === "error" && consoleErrors.push(m.text()));
-    page.on("pageerror", (e) => consoleErrors.push(String(e)));
+    recordErrors(page, consoleErrors);
     await page.goto(server.url);
     const up = await waitFor(async () => (await foveal(page, () => window.foveal.stats.framesApplied)) > 5, 20_000);
     assert.ok(up, "no frames");

@@ -7,7 +7,7 @@ import assert from "node:assert/strict";
 import { mkdirSync } from "node:fs";
 import { join } from "node:path";
 import { after, before, describe, test } from "node:test";
-import { clientModule, freePort, launch, missing, repo, sleep, startServer, summary, waitFor } from "./harness.mjs";
+import { clientModule, freePort, launch, missing, recordErrors, repo, sleep, startServer, summary, waitFor } from "./harness.mjs";
 
 const skip = missing() ?? false;
 
@@ -45,8 +45,7 @@ describe("viewer at N = 500 under a sphere-test budget", { skip }, () => {
     rpc = rpc(server.url);
     browser = await launch();
     page = await browser.browser.newPage();
-    page.on("console", (m) => m.type() === "error" && consoleErrors.push(m.text()));
-    page.on("pageerror", (e) => consoleErrors.push(String(e)));
+    recordErrors(page, consoleErrors);
     await page.goto(server.url);
   });
 
