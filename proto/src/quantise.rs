@@ -143,7 +143,26 @@ impl pb::Collisions {
         Self {
             real: bytes(real).into(),
             deemed: bytes(deemed).into(),
+            deemed_truth: Default::default(),
         }
+    }
+
+    /// The same list with an audit's answer for each deemed pair, in the order of the deemed
+    /// pairs (`Collisions.deemed_truth`: 0 not audited, 1 colliding, 2 apart).
+    pub fn with_deemed_truth(mut self, truth: impl Iterator<Item = u8>) -> Self {
+        self.deemed_truth = truth.collect::<Vec<u8>>().into();
+        self
+    }
+
+    /// The deemed pairs with what the frame's audit found of each (0 not audited, 1 colliding,
+    /// 2 apart; 0 for every pair of an unaudited frame).
+    pub fn deemed_with_truth(&self) -> impl Iterator<Item = ((u32, u32), u8)> + '_ {
+        let truth = self
+            .deemed_truth
+            .iter()
+            .copied()
+            .chain(std::iter::repeat(0));
+        pairs(&self.deemed).zip(truth)
     }
 
     /// The pairs resolved as colliding.
@@ -342,5 +361,21 @@ mod tests {
         );
         assert_eq!(back.deemed_pairs().collect::<Vec<_>>(), vec![(2, 3)]);
         assert_eq!(pb::Collisions::default().real_pairs().count(), 0);
+    }
+
+    #[test]
+    fn deemed_pairs_carry_their_truth_in_order_and_an_unaudited_list_reads_as_not_audited() {
+        let c = pb::Collisions::pack([].into_iter(), [(2, 3), (4, 5), (6, 7)].into_iter())
+            .with_deemed_truth([2, 1, 0].into_iter());
+        let back = pb::Collisions::decode(c.encode_to_vec().as_slice()).expect("decodes");
+        assert_eq!(
+            back.deemed_with_truth().collect::<Vec<_>>(),
+            vec![((2, 3), 2), ((4, 5), 1), ((6, 7), 0)]
+        );
+        let plain = pb::Collisions::pack([].into_iter(), [(2, 3)].into_iter());
+        assert_eq!(
+            plain.deemed_with_truth().collect::<Vec<_>>(),
+            vec![((2, 3), 0)]
+        );
     }
 }

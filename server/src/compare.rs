@@ -18,10 +18,12 @@
 
 use foveal_engine::collider::{Collider, true_weight};
 use foveal_engine::fixation::FrameView;
+use foveal_engine::metrics::Fovea;
 use foveal_engine::narrow_phase::{PairState, PairStatus};
+use foveal_engine::report::FOVEAL_DEG;
 use foveal_engine::{
-    AuditReport, Clock, ConfigError, Fixation, FrameBudget, FrameReport, SchedulerKind, SimConfig,
-    Simulation,
+    AuditReport, Clock, ConfigError, DeemedTruth, Fixation, FrameBudget, FrameReport,
+    SchedulerKind, SimConfig, Simulation,
 };
 use foveal_proto::pb;
 
@@ -175,6 +177,9 @@ pub struct Comparison {
     slots: Vec<u32>,
     /// The audit's traversal stack.
     stack: Vec<(f32, u16, u16, u8, u8)>,
+    /// The paired audit's answer for each deemed pair of the main side (0) and of the second
+    /// collider (1), in pair order: what the viewer colours each side's wrong guesses by.
+    truths: [Vec<DeemedTruth>; 2],
 }
 
 impl Comparison {
@@ -194,6 +199,7 @@ impl Comparison {
             collider,
             slots: sim.body_slots().to_vec(),
             stack: Vec::new(),
+            truths: Default::default(),
         }))
     }
 
@@ -263,15 +269,19 @@ impl Comparison {
         };
         let mut p_sum = [0.0f64; 2];
         let mut seen = 0usize;
+        let fovea = view
+            .as_ref()
+            .map(|v| Fovea::new(viewer, v.fixation_px, FOVEAL_DEG));
+        for t in &mut self.truths {
+            t.clear();
+        }
         for i in 0..n {
             let sides = [main.get(i), blind.get(i)];
             if !sides.iter().any(|p| deemed(*p)) {
                 continue;
             }
             seen += 1;
-            if !(seen - 1).is_multiple_of(stride) {
-                continue;
-            }
+            let sampled = (seen - 1).is_multiple_of(stride);
             // The two lists hold the same candidates in the same order; settle a pair once
             // when both name it.
             let mut truth: Option<((u32, u32), Truth)> = None;
@@ -279,6 +289,10 @@ impl Comparison {
                 let Some(p) = p.filter(|p| p.status == PairStatus::Deemed) else {
                     continue;
                 };
+                if !sampled {
+                    self.truths[side].push(DeemedTruth::NotAudited);
+                    continue;
+                }
                 let t = match truth {
                     Some((ab, t)) if ab == (p.a, p.b) => t,
                     _ => {
@@ -300,11 +314,19 @@ impl Comparison {
                     &mut out.blind
                 };
                 match t {
-                    None => a.true_positives += stride as u32,
+                    None => {
+                        a.true_positives += stride as u32;
+                        self.truths[side].push(DeemedTruth::Touching);
+                    }
                     Some((sep, w)) => {
                         a.false_positives += stride as u32;
                         a.geometric_inaccuracy += sep * stride as f64;
                         p_sum[side] += w * stride as f64;
+                        let mid =
+                            (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
+                        a.foveal_false_positives += stride as u32
+                            * u32::from(fovea.as_ref().is_some_and(|f| f.contains_point(mid)));
+                        self.truths[side].push(DeemedTruth::Apart);
                     }
                 }
             }
@@ -334,16 +356,16 @@ impl Comparison {
         self.slots.extend_from_slice(now);
     }
 
-    /// The second collider's collision list of the latest frame, by body id.
+    /// The second collider's collision list of the latest frame, by body id, with the paired
+    /// audit's answer for each deemed pair.
     pub fn collisions(&self, sim: &Simulation) -> pb::Collisions {
-        let of = |status: PairStatus| {
-            self.collider
-                .pairs()
-                .iter()
-                .filter(move |p| p.status == status)
-                .map(|p| sim.id_pair((p.a, p.b)))
-        };
-        pb::Collisions::pack(of(PairStatus::Colliding), of(PairStatus::Deemed))
+        crate::convert::collision_list(sim, self.collider.pairs(), &self.truths[1])
+    }
+
+    /// The paired audit's answer for each deemed pair of the main side's latest frame, in pair
+    /// order: its collision list's truths when the frame has no audit of its own.
+    pub fn main_truth(&self) -> &[DeemedTruth] {
+        &self.truths[0]
     }
 }
 
@@ -416,11 +438,50 @@ mod tests {
             let own = main.audit.expect("audit");
             assert_eq!(out.audit.main.false_positives, own.false_positives);
             assert_eq!(out.audit.main.true_positives, own.true_positives);
+            assert_eq!(
+                out.audit.main.foveal_false_positives,
+                own.foveal_false_positives
+            );
+            // Pair by pair too: the answers the viewer colours the gaze side by.
+            assert_eq!(cmp.main_truth(), s.deemed_truth());
             let blind = out.audit.blind;
             assert_eq!(
                 blind.false_positives + blind.true_positives,
                 out.report.deemed
             );
+            let c = cmp.collisions(&s);
+            let truths: Vec<u8> = c.deemed_with_truth().map(|(_, t)| t).collect();
+            let apart = truths
+                .iter()
+                .filter(|&&t| t == DeemedTruth::Apart as u8)
+                .count();
+            assert_eq!(truths.len(), out.report.deemed as usize);
+            assert!(truths.iter().all(|&t| t != DeemedTruth::NotAudited as u8));
+            assert_eq!(apart as u32, blind.false_positives);
+        }
+    }
+
+    /// Above the audit's cap one pair in `stride` is settled: the others are sent as not
+    /// audited, and the counts of those settled, scaled by the stride, are the audit's.
+    #[test]
+    fn a_sampled_audit_marks_the_pairs_it_passed_by() {
+        let mut s = sim(3_000, BudgetSpec::SphereTests(500));
+        let mut cmp = Comparison::new(Compare::RoundRobin, &s)
+            .expect("valid")
+            .expect("on");
+        let main = s.step(Some(Fixation::at(0.5, 0.5)), &FrozenClock).clone();
+        let out = cmp.run(&s, &main, &FrozenClock);
+        let k = out.audit.stride;
+        assert!(k > 1, "{} deemed", main.deemed);
+        for (truth, audit, deemed) in [
+            (cmp.main_truth(), out.audit.main, main.deemed),
+            (&cmp.truths[1][..], out.audit.blind, out.report.deemed),
+        ] {
+            assert_eq!(truth.len() as u32, deemed);
+            let count = |t: DeemedTruth| truth.iter().filter(|&&x| x == t).count() as u32;
+            assert_eq!(count(DeemedTruth::Apart) * k, audit.false_positives);
+            assert_eq!(count(DeemedTruth::Touching) * k, audit.true_positives);
+            assert!(count(DeemedTruth::NotAudited) > 0);
         }
     }
 

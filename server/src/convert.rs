@@ -5,10 +5,11 @@
 //! set oneof replaces the whole variant.
 
 use foveal_engine::math::Vec3;
+use foveal_engine::narrow_phase::{PairState, PairStatus};
 use foveal_engine::shape::Star;
 use foveal_engine::{
-    BudgetSpec, ConfigError, EccentricityUnit, FrameReport, PerceptualFunction, PerceptualModel,
-    SchedulerKind, SimConfig, Simulation, Truth,
+    BudgetSpec, ConfigError, DeemedTruth, EccentricityUnit, FrameReport, PerceptualFunction,
+    PerceptualModel, SchedulerKind, SimConfig, Simulation, Truth,
 };
 use foveal_proto::pb;
 
@@ -502,16 +503,33 @@ pub fn quantised_poses(sim: &Simulation) -> pb::QuantisedPoses {
     )
 }
 
-/// The last frame's collision list: pairs resolved as colliding and pairs deemed colliding.
-pub fn collisions(sim: &Simulation) -> pb::Collisions {
-    use foveal_engine::narrow_phase::PairStatus;
+/// The last frame's collision list: pairs resolved as colliding and pairs deemed colliding, with
+/// the frame's audit of the deemed ones, or else `paired` (the side by side's audit of them).
+pub fn collisions(sim: &Simulation, paired: Option<&[DeemedTruth]>) -> pb::Collisions {
+    let own = sim.deemed_truth();
+    let truth = if own.is_empty() {
+        paired.unwrap_or(&[])
+    } else {
+        own
+    };
+    collision_list(sim, sim.pairs(), truth)
+}
+
+/// A collision list of `pairs` (states of `sim`'s candidates), by body id, with `truth` (one
+/// answer a deemed pair, in order, or none).
+pub fn collision_list(
+    sim: &Simulation,
+    pairs: &[PairState],
+    truth: &[DeemedTruth],
+) -> pb::Collisions {
     let of = |status: PairStatus| {
-        sim.pairs()
+        pairs
             .iter()
             .filter(move |p| p.status == status)
             .map(|p| sim.id_pair((p.a, p.b)))
     };
     pb::Collisions::pack(of(PairStatus::Colliding), of(PairStatus::Deemed))
+        .with_deemed_truth(truth.iter().map(|&t| t as u8))
 }
 
 /// The protocol fixation of a frame.
@@ -607,6 +625,7 @@ fn audit_to_pb(a: &foveal_engine::AuditReport) -> pb::AuditMetrics {
         true_false_positives: u64::from(a.false_positives),
         true_geometric_inaccuracy: a.geometric_inaccuracy,
         true_perceived_inaccuracy: a.perceived_inaccuracy.unwrap_or(0.0),
+        true_foveal_false_positives: u64::from(a.foveal_false_positives),
     }
 }
 
@@ -631,6 +650,8 @@ pub fn frame_to_pb(r: &FrameReport, index: u64, fixation: &pb::Fixation) -> pb::
             geometric_inaccuracy_se: r.geometric_inaccuracy_se,
             perceived_inaccuracy_se: r.perceived_inaccuracy_se.unwrap_or(0.0),
             budget_spent_before_narrow: r.budget_spent_before_narrow,
+            foveal_pairs: u64::from(r.foveal_pairs),
+            foveal_deemed: u64::from(r.foveal_deemed),
             audit: r.audit.as_ref().map(audit_to_pb),
         }),
         profile: Some(pb::PhaseProfile {

@@ -391,7 +391,10 @@ fn run(
             .wants_quantised_poses()
             .then(|| Arc::new(convert::quantised_poses(sim)));
         let wants_collisions = shared.fanout.wants_collisions();
-        let collisions = wants_collisions.then(|| Arc::new(convert::collisions(sim)));
+        let collisions = wants_collisions.then(|| {
+            let paired = compared.map(crate::compare::Comparison::main_truth);
+            Arc::new(convert::collisions(sim, paired))
+        });
         let comparison_collisions = compared
             .filter(|_| wants_collisions)
             .map(|c| Arc::new(c.collisions(sim)));

@@ -22,6 +22,12 @@ pub struct Summary {
     /// Pairs and deemed pairs within 5 degrees of the fixation (near) and beyond it (far).
     near: (u64, u64),
     far: (u64, u64),
+    /// Of the audited frames (their own audit, or the side by side's paired one): pairs and
+    /// deemed pairs truly apart (wrong guesses), within 5 degrees of the fixation and beyond.
+    apart_near: (u64, u64),
+    apart_far: (u64, u64),
+    /// The last frame recorded, for its side by side's paired audit when it had none of its own.
+    last_pairs: Option<(u32, u32)>,
     /// True P of the frames with an audit, and their count.
     true_p: (f64, u64),
     /// The side by side's second collider: its time per frame (ns) and its true P.
@@ -59,6 +65,9 @@ impl Summary {
             real_sum: 0,
             near: (0, 0),
             far: (0, 0),
+            apart_near: (0, 0),
+            apart_far: (0, 0),
+            last_pairs: None,
             true_p: (0.0, 0),
             compare_ns: Vec::new(),
             compare_true_p: 0.0,
@@ -87,6 +96,15 @@ impl Summary {
             self.true_p.0 += p;
             self.true_p.1 += 1;
         }
+        let pairs = (
+            r.foveal_pairs,
+            r.candidate_pairs.saturating_sub(r.foveal_pairs),
+        );
+        self.last_pairs = Some(pairs);
+        if let Some(a) = &r.audit {
+            self.record_apart(pairs, a);
+            self.last_pairs = None;
+        }
         if r.budget_spent_before_narrow {
             let p = &r.profile;
             self.starved_fixed_ns
@@ -101,6 +119,19 @@ impl Summary {
         self.compare_ns.push(run_ns);
         self.compare_true_p += audit.blind.perceived_inaccuracy.unwrap_or(0.0);
         self.paired_main_true_p += audit.main.perceived_inaccuracy.unwrap_or(0.0);
+        if let Some(pairs) = self.last_pairs.take() {
+            self.record_apart(pairs, &audit.main);
+        }
+    }
+
+    /// Add an audited frame's wrong guesses near the fixation and beyond it (`pairs`: its
+    /// candidate pairs near and far).
+    fn record_apart(&mut self, (near, far): (u32, u32), a: &foveal_engine::AuditReport) {
+        let foveal = a.foveal_false_positives.min(a.false_positives);
+        self.apart_near.0 += u64::from(near);
+        self.apart_near.1 += u64::from(foveal);
+        self.apart_far.0 += u64::from(far);
+        self.apart_far.1 += u64::from(a.false_positives - foveal);
     }
 
     /// If the window is over at `now`, log it, publish its rates and start the next one.
@@ -151,6 +182,8 @@ impl Summary {
             real = format_args!("{:.1}", per_frame(self.real_sum as f64)),
             deemed_near = format_args!("{:.3}", share(self.near)),
             deemed_far = format_args!("{:.3}", share(self.far)),
+            apart_near = format_args!("{:.4}", share(self.apart_near)),
+            apart_far = format_args!("{:.4}", share(self.apart_far)),
             true_p = format_args!("{true_p:.4}"),
             compare_p50_ms = format_args!("{:.3}", ms(quantile(&self.compare_ns, 0.5))),
             compare_p99_ms = format_args!("{:.3}", ms(quantile(&self.compare_ns, 0.99))),

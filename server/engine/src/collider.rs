@@ -15,7 +15,7 @@ use crate::fixation::{Fixation, FrameView};
 use crate::metrics::{self, Fovea};
 use crate::narrow_phase::{NarrowPhase, PairState, PairStatus, separation, shape_separation};
 use crate::perception::Viewer;
-use crate::report::{AuditReport, FOVEAL_DEG, FrameReport, PhaseProfile};
+use crate::report::{AuditReport, DeemedTruth, FOVEAL_DEG, FrameReport, PhaseProfile};
 use crate::schedule::calibration::Calibration;
 use crate::schedule::{self, Passes, Priorities, Prioritiser, Scheduler, Work};
 use crate::sphere_tree::SphereTree;
@@ -101,6 +101,9 @@ pub struct Collider {
     narrow: NarrowPhase,
     priorities: Priorities,
     audit_stack: Vec<(f32, u16, u16, u8, u8)>,
+    /// The last audit's answer for each deemed pair, in pair order (empty when the last frame
+    /// was not audited).
+    deemed_truth: Vec<DeemedTruth>,
     /// Gaze-blind round-robin, for frames whose wall-clock budget cannot pay for the ordering.
     fallback: Box<dyn Scheduler>,
     /// The cheap gaze order of those frames, where the broad phase has columns.
@@ -180,6 +183,7 @@ impl Collider {
             narrow: NarrowPhase::default(),
             priorities: Priorities::default(),
             audit_stack: Vec::new(),
+            deemed_truth: Vec::new(),
             fallback: schedule::fallback(),
             rings: Default::default(),
             rings_cost: CostGate::default(),
@@ -819,17 +823,24 @@ impl Collider {
         fixation: Option<Fixation>,
         r: &mut FrameReport,
     ) {
+        self.deemed_truth.clear();
         if !self.config.audit {
             return;
         }
         let view = self.measure_view(input, fixation);
         r.audit = Some(audit(
             &self.narrow,
-            input.tree,
-            input.world,
+            input,
             view.as_ref(),
             &mut self.audit_stack,
+            &mut self.deemed_truth,
         ));
+    }
+
+    /// The last audit's answer for each deemed pair of [`Self::pairs`], in pair order: what the
+    /// viewer colours a wrong guess by. Empty when the last frame was not audited.
+    pub fn deemed_truth(&self) -> &[DeemedTruth] {
+        &self.deemed_truth
     }
 
     /// The metrics of [`Self::measure_within`] without the audit. With a `clock`, returns the
@@ -905,22 +916,33 @@ impl Collider {
 
 /// The exact answer for every deemed pair: whether it collides, and for those that do not, the
 /// true gap (separation of the leaf-sphere sets) and its perceived weight at the closest points.
+/// Each pair's answer goes to `truths`, in pair order.
 fn audit(
     np: &NarrowPhase,
-    tree: &SphereTree,
-    world: &World,
+    input: &FrameInput<'_>,
     view: Option<&FrameView<'_>>,
     stack: &mut Vec<(f32, u16, u16, u8, u8)>,
+    truths: &mut Vec<DeemedTruth>,
 ) -> AuditReport {
+    let (tree, world) = (input.tree, input.world);
+    let fovea = view.map(|v| Fovea::new(input.viewer, v.fixation_px, FOVEAL_DEG));
     let mut a = AuditReport::default();
     let mut p_sum = 0.0;
     for p in np.pairs.iter().filter(|p| p.status == PairStatus::Deemed) {
-        match true_weight(tree, world, p.a as usize, p.b as usize, view, stack) {
-            None => a.true_positives += 1,
+        let (i, j) = (p.a as usize, p.b as usize);
+        match true_weight(tree, world, i, j, view, stack) {
+            None => {
+                a.true_positives += 1;
+                truths.push(DeemedTruth::Touching);
+            }
             Some((sep, w)) => {
                 a.false_positives += 1;
                 a.geometric_inaccuracy += sep;
                 p_sum += w;
+                let mid = (world.position[i] + world.position[j]) * 0.5;
+                a.foveal_false_positives +=
+                    u32::from(fovea.as_ref().is_some_and(|f| f.contains_point(mid)));
+                truths.push(DeemedTruth::Apart);
             }
         }
     }

@@ -42,12 +42,19 @@ impl PhaseProfile {
 }
 
 /// The exact answer for the frame's deemed pairs (audit mode).
+///
+/// A field missing from a serialized record takes its default, as in [`FrameReport`].
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct AuditReport {
     /// Deemed pairs that are not colliding (true false positives).
     pub false_positives: u32,
     /// Deemed pairs that do collide.
     pub true_positives: u32,
+    /// Of [`Self::false_positives`], those within [`FOVEAL_DEG`] of the fixation (the midpoint of
+    /// the two centres, as [`FrameReport::foveal_pairs`] counts): the wrong guesses where the
+    /// viewer looks. 0 without a fixation.
+    pub foveal_false_positives: u32,
     /// True Δ: the sum over deemed pairs of the gap each leaves (the separation of its leaf-sphere
     /// sets), 0 for a deemed pair that truly collides: the quantity
     /// [`FrameReport::geometric_inaccuracy`] estimates.
@@ -57,6 +64,20 @@ pub struct AuditReport {
     /// Candidate pairs of this frame's positions (boxes overlapping) that the frame did not
     /// collide because their region was stale: what shedding the broad phase cost.
     pub missed_pairs: u32,
+}
+
+/// What an audit found of one deemed pair: whether deeming it colliding was right. The protocol
+/// sends these as one byte a pair (`Collisions.deemed_truth`), so the values are fixed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[repr(u8)]
+pub enum DeemedTruth {
+    /// No audit settled the pair (a sampled audit passed it by).
+    NotAudited = 0,
+    /// The pair does collide: the guess was right and nothing shows.
+    Touching = 1,
+    /// The pair is apart: its response will push the bodies apart across a visible gap, the
+    /// error Δ and P measure.
+    Apart = 2,
 }
 
 /// Eccentricity (degrees of visual angle) within which a frame counts its pairs as foveal: the

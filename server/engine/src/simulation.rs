@@ -238,6 +238,12 @@ impl Simulation {
         self.collider.pairs()
     }
 
+    /// The last frame's audit, pair by pair: for each deemed pair of [`Self::pairs`], in order,
+    /// whether it truly collides. Empty when the frame was not audited.
+    pub fn deemed_truth(&self) -> &[crate::DeemedTruth] {
+        self.collider.deemed_truth()
+    }
+
     /// What prioritisation computed for the last frame's pairs.
     pub fn priorities(&self) -> &crate::schedule::Priorities {
         self.collider.priorities()

@@ -3,8 +3,12 @@
 use std::collections::BTreeSet;
 
 use foveal_engine::broad_phase::brute_force_pairs;
+use foveal_engine::metrics::Fovea;
 use foveal_engine::narrow_phase::{PairStatus, brute_force_colliding};
-use foveal_engine::{BudgetSpec, Fixation, FrozenClock, SchedulerKind, SimConfig, Simulation};
+use foveal_engine::report::FOVEAL_DEG;
+use foveal_engine::{
+    BudgetSpec, DeemedTruth, Fixation, FrozenClock, SchedulerKind, SimConfig, Simulation,
+};
 
 fn config(n: u32, depth: u32, budget: BudgetSpec, kind: SchedulerKind) -> SimConfig {
     let mut cfg = SimConfig::default();
@@ -57,23 +61,39 @@ fn audit_counts_true_false_positives_of_deemed_pairs() {
         SchedulerKind::PriorityOnly,
     ))
     .expect("valid");
-    let mut saw_fp = false;
+    let (mut saw_fp, mut saw_foveal_fp) = (false, false);
     for _ in 0..20 {
         let r = sim.step(Some(Fixation::at(0.4, 0.6)), &FrozenClock).clone();
         let a = r.audit.expect("audit on");
         assert_eq!(a.false_positives + a.true_positives, r.deemed);
         let w = sim.world();
-        let mut fp = 0;
-        for p in sim
+        let viewer = sim.viewer();
+        let fovea = Fovea::new(viewer, viewer.to_pixels(0.4, 0.6), FOVEAL_DEG);
+        let (mut fp, mut foveal_fp) = (0, 0);
+        let deemed = sim
             .pairs()
             .iter()
-            .filter(|p| p.status == PairStatus::Deemed)
-        {
-            if !brute_force_colliding(sim.tree(), w, p.a as usize, p.b as usize) {
+            .filter(|p| p.status == PairStatus::Deemed);
+        // The audit answers for every deemed pair, in order: the list the viewer colours by.
+        assert_eq!(sim.deemed_truth().len() as u32, r.deemed);
+        for (p, &truth) in deemed.zip(sim.deemed_truth()) {
+            let apart = !brute_force_colliding(sim.tree(), w, p.a as usize, p.b as usize);
+            let want = if apart {
+                DeemedTruth::Apart
+            } else {
+                DeemedTruth::Touching
+            };
+            assert_eq!(truth, want, "pair {:?}", (p.a, p.b));
+            if apart {
                 fp += 1;
+                let mid = (w.position[p.a as usize] + w.position[p.b as usize]) * 0.5;
+                foveal_fp += u32::from(fovea.contains_point(mid));
             }
         }
         assert_eq!(a.false_positives, fp);
+        assert_eq!(a.foveal_false_positives, foveal_fp);
+        assert!(foveal_fp <= r.foveal_deemed);
+        saw_foveal_fp |= foveal_fp > 0;
         saw_fp |= fp > 0;
         // The estimate is an upper bound on the true gap sum: centres of intersecting spheres are
         // further apart than the true separation of the leaves below them.
@@ -84,7 +104,18 @@ fn audit_counts_true_false_positives_of_deemed_pairs() {
         );
         assert!(a.perceived_inaccuracy.expect("fixation given") >= 0.0);
     }
-    assert!(saw_fp);
+    assert!(saw_fp && saw_foveal_fp);
+    // A frame that is not audited has no answers to colour by.
+    let mut cfg = config(
+        400,
+        4,
+        BudgetSpec::SphereTests(3_000),
+        SchedulerKind::PriorityOnly,
+    );
+    cfg.audit = false;
+    let mut sim = Simulation::new(cfg).expect("valid");
+    let r = sim.step(Some(Fixation::at(0.4, 0.6)), &FrozenClock).clone();
+    assert!(r.deemed > 0 && sim.deemed_truth().is_empty());
 }
 
 #[test]
