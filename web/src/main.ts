@@ -12,6 +12,7 @@ import {
   PairStatus,
   SceneConfigSchema,
   type BodyInspection,
+  type Collisions,
   type Frame,
   type SceneConfig,
   type SceneDescription,
@@ -33,7 +34,7 @@ import { Overlay, fovealRadius } from "./overlay";
 import { Plots } from "./plots";
 import { FrameLog } from "./csv";
 import { FirstContacts, starGap } from "./focus";
-import { applyPoses, applyQuantisedPoses, forEachPair } from "./poses";
+import { applyPoses, applyQuantisedPoses, DeemedTruth, forEachDeemed, forEachPair } from "./poses";
 import { calls, connect, pageTokens } from "./rpc";
 import { COLOURS, PALETTES, SceneView, usePalette, type PaletteName } from "./scene";
 import { starDims } from "./star";
@@ -68,7 +69,7 @@ const gazeClient = tokens.gazeToken ? connect(window.location.origin, tokens.gaz
 const view = new SceneView(el<HTMLCanvasElement>("scene"));
 const overlay = new Overlay(el<HTMLCanvasElement>("overlay"));
 /** The side by side's right view and overlay, made the first time the scene compares. */
-let blind: { view: SceneView; overlay: Overlay } | null = null;
+let blind: { view: SceneView; overlay: Overlay; tally: Tally | null } | null = null;
 const plots = new Plots(el("plots"), 360);
 const gaze = new MouseGaze(gazeClient, el("scene"));
 const log = new FrameLog();
@@ -88,6 +89,8 @@ const loop = { paused: false, frames: -1, note: "" };
 const draw = {
   links: false,
   priority: false,
+  /** Thin out the bodies away from the fixation while drawing every body is too slow. */
+  thin: localStorage.getItem("foveal.thin") !== "off",
   palette: (localStorage.getItem("foveal.palette") as PaletteName | null) ?? "standard",
 };
 if (!(draw.palette in PALETTES)) draw.palette = "standard";
@@ -153,6 +156,8 @@ const focus = {
   calls,
   pick: (body: number) => pickBody(body),
   lastFrame: () => lastFrame,
+  tally: () => tally,
+  colours: COLOURS,
   csv: (n?: number) => log.csv(n),
 };
 
@@ -197,9 +202,10 @@ function useSplit(d: SceneDescription): void {
     const v = new SceneView(el<HTMLCanvasElement>("scene-blind"));
     // The left view is the one orbited; the right one looks through its camera.
     v.controls.enabled = false;
-    blind = { view: v, overlay: new Overlay(el<HTMLCanvasElement>("overlay-blind")) };
+    blind = { view: v, overlay: new Overlay(el<HTMLCanvasElement>("overlay-blind")), tally: null };
   }
   blind.view.load(d);
+  blind.view.setFarStride(view.farStride);
 }
 
 /** The same poses on the right view, coloured by the gaze-blind collider's collision list. */
@@ -210,10 +216,7 @@ function showBlind(f: Frame, bodies: number): void {
   v.matrices().set(view.matrices().subarray(0, 16 * bodies));
   v.posesWritten(bodies);
   v.colour((set) => {
-    if (c.collisions) {
-      forEachPair(c.collisions.real, (a, b) => (set(a, COLOURS.real), set(b, COLOURS.real)));
-      forEachPair(c.collisions.deemed, (a, b) => (set(a, COLOURS.deemed), set(b, COLOURS.deemed)));
-    }
+    blind!.tally = c.collisions ? markCollisions(c.collisions, set) : null;
   });
   v.setDetailRegion(view.detailRegion);
   v.commit();
@@ -289,6 +292,11 @@ function onFrame(f: Frame): void {
     stats.frameBytes = bytes.length;
   }
   if (split.on) showBlind(f, bodies);
+  // The legend names the audited colours only when the frame has them.
+  const blindTally = split.on && blind ? blind.tally : null;
+  const legend = el("legend");
+  legend.classList.toggle("audited", !!tally?.audited || !!blindTally?.audited);
+  legend.classList.toggle("sampled", (tally?.unaudited ?? 0) + (blindTally?.unaudited ?? 0) > 0);
   stats.framesApplied++;
   stats.lastIndex = Number(f.index);
   stats.bodies = bodies;
@@ -367,10 +375,8 @@ function show(f: Frame): number {
   view.posesWritten(bodies);
   const c = f.collisions;
   view.colour((set) => {
-    if (c) {
-      forEachPair(c.real, (a, b) => (set(a, COLOURS.real), set(b, COLOURS.real)));
-      forEachPair(c.deemed, (a, b) => (set(a, COLOURS.deemed), set(b, COLOURS.deemed)));
-    }
+    if (c) tally = markCollisions(c, set);
+    else tally = null;
     const ins = picked.inspection;
     if (picked.body >= 0 && ins) {
       for (const p of ins.pairs) set(p.other, pairColour(p.status));
@@ -380,13 +386,58 @@ function show(f: Frame): number {
   const links: { a: number; b: number; c: typeof COLOURS.real }[] = [];
   if (draw.links && c) {
     forEachPair(c.real, (a, b) => links.push({ a, b, c: COLOURS.real }));
-    forEachPair(c.deemed, (a, b) => links.push({ a, b, c: COLOURS.deemed }));
+    const audited = c.deemedTruth.length > 0;
+    forEachDeemed(c, (a, b, t) => links.push({ a, b, c: deemedColour(t, audited) }));
   }
   if (picked.body >= 0 && picked.inspection) {
     for (const p of picked.inspection.pairs) links.push({ a: picked.body, b: p.other, c: pairColour(p.status) });
   }
   view.setLinks(links, links.length > 0);
   return bodies;
+}
+
+/** The colour of a deemed pair: by what the frame's audit found of it, when it was audited. */
+function deemedColour(t: DeemedTruth, audited: boolean): typeof COLOURS.real {
+  if (!audited) return COLOURS.deemed;
+  return t === DeemedTruth.Apart ? COLOURS.deemed : t === DeemedTruth.Touching ? COLOURS.touching : COLOURS.unaudited;
+}
+
+/** The pairs of the last frame drawn, by colour (see markCollisions). */
+interface Tally {
+  real: number;
+  /** Deemed, and apart by the audit: wrong guesses (or every deemed pair without an audit). */
+  deemed: number;
+  touching: number;
+  unaudited: number;
+  audited: boolean;
+}
+let tally: Tally | null = null;
+
+/**
+ * Colour a collision list's bodies. With an audit, a deemed pair is coloured by what it truly is:
+ * apart (a wrong guess, drawn as deemed: its bodies bounce across a visible gap), touching (a right
+ * guess, nothing shows) or, where a sampling audit passed it by, not audited. Right guesses go
+ * first and wrong ones last, so that a body in any pair deemed across a gap shows it whatever else
+ * it touches. Without an audit every deemed pair is drawn as deemed, as the frame reports it.
+ */
+function markCollisions(c: Collisions, set: (body: number, colour: typeof COLOURS.real) => void): Tally {
+  const audited = c.deemedTruth.length > 0;
+  const t: Tally = { real: 0, deemed: 0, touching: 0, unaudited: 0, audited };
+  const pass = (want: (truth: DeemedTruth) => boolean) =>
+    forEachDeemed(c, (a, b, truth) => {
+      if (!want(truth)) return;
+      const colour = deemedColour(truth, audited);
+      if (!audited || truth === DeemedTruth.Apart) t.deemed++;
+      else if (truth === DeemedTruth.Touching) t.touching++;
+      else t.unaudited++;
+      set(a, colour);
+      set(b, colour);
+    });
+  if (audited) pass((truth) => truth === DeemedTruth.Touching);
+  forEachPair(c.real, (a, b) => (t.real++, set(a, COLOURS.real), set(b, COLOURS.real)));
+  if (audited) pass((truth) => truth === DeemedTruth.NotAudited);
+  pass((truth) => !audited || truth === DeemedTruth.Apart);
+  return t;
 }
 
 function pairColour(status: PairStatus): typeof COLOURS.real {
@@ -823,6 +874,17 @@ function setDraw(what: "links" | "priority", on: boolean): void {
   reshow();
 }
 
+function setThin(on: boolean): void {
+  draw.thin = on;
+  el<HTMLInputElement>("draw-thin").checked = on;
+  localStorage.setItem("foveal.thin", on ? "on" : "off");
+  lastThin = 0;
+  if (!on) {
+    view.setFarStride(1);
+    blind?.view.setFarStride(1);
+  }
+}
+
 function setPalette(name: PaletteName): void {
   draw.palette = name;
   usePalette(name);
@@ -833,6 +895,8 @@ function setPalette(name: PaletteName): void {
 }
 el<HTMLInputElement>("draw-links").addEventListener("change", (e) => setDraw("links", (e.target as HTMLInputElement).checked));
 el<HTMLInputElement>("draw-priority").addEventListener("change", (e) => setDraw("priority", (e.target as HTMLInputElement).checked));
+el<HTMLInputElement>("draw-thin").addEventListener("change", (e) => setThin((e.target as HTMLInputElement).checked));
+setThin(draw.thin);
 el<HTMLSelectElement>("palette").addEventListener("change", (e) => setPalette((e.target as HTMLSelectElement).value as PaletteName));
 setPalette(draw.palette);
 
@@ -930,6 +994,21 @@ function sampled(stride: number, se: number): string {
   return stride > 1 ? ` ± ${se.toFixed(3)} (1 in ${stride})` : "";
 }
 
+/**
+ * The readout's line on where the wrong guesses are: the deemed pairs an audit found apart, within
+ * 5 degrees of the fixation and beyond, each as a share of the candidate pairs there (the frame's
+ * own audit, or the side by side's paired one, scaled by its stride).
+ */
+function wrongGuesses(f: Frame | null): string[] {
+  const m = f?.metrics;
+  const a = m?.audit ?? f?.comparison?.mainAudit;
+  if (!m || !a) return [];
+  const near = Number(a.trueFovealFalsePositives), far = Number(a.trueFalsePositives) - near;
+  const nearPairs = Number(m.fovealPairs), farPairs = Number(m.candidatePairs) - nearPairs;
+  const pct = (k: number, n: number) => (n > 0 ? `${((100 * k) / n).toFixed(1)}%` : "-");
+  return [`wrong guesses (deemed, truly apart): ${pct(near, nearPairs)} of ${nearPairs} pairs within 5°, ${pct(far, farPairs)} of ${farPairs} beyond`];
+}
+
 function drawReadout(): void {
   const f = lastFrame, m = f?.metrics, fix = f?.fixation;
   const src = fix ? ({ [FixationSource.GAZE]: "gaze", [FixationSource.FALLBACK_NO_GAZE]: "no gaze: centre", [FixationSource.FALLBACK_STALE]: "stale: centre" } as Record<number, string>)[fix.source] ?? "?" : "-";
@@ -940,9 +1019,14 @@ function drawReadout(): void {
           `frame ${f?.index}  bodies ${stats.bodies}  ${arrivals.length} fps`,
           `pairs ${m.candidatePairs}  real ${m.realCollisions}  deemed ${m.deemedAtInterruption}`,
           `T ${(1000 * m.collisionTimeS).toFixed(2)} ms  tests ${m.sphereTests}${m.budgetExhausted ? " (budget ran out)" : ""}`,
+          ...(scene?.config?.budget?.kind.case === "sphereTests"
+            ? [`a budget of ${scene.config.budget.kind.value} sphere tests: the same work on any machine, staged (not what a frame's time affords)`]
+            : []),
           ...(m.budgetSpentBeforeNarrow
             ? ["the budget was spent before the narrow phase: every pair deemed (raise the budget)"]
             : []),
+          ...wrongGuesses(f),
+          ...thinned(),
           `Δ ${m.geometricInaccuracy.toFixed(3)}${sampled(m.metricsStride, m.geometricInaccuracySe)}  P ${m.perceivedInaccuracy.toFixed(3)}${sampled(m.metricsStride, m.perceivedInaccuracySe)}${m.audit ? `  true P ${m.audit.truePerceivedInaccuracy.toFixed(3)}  false positives ${m.audit.trueFalsePositives}` : ""}`,
           `fixation (${fix?.x.toFixed(3)}, ${fix?.y.toFixed(3)}) ${src}${gaze.held && gaze.enabled ? " (mouse off the scene: its last position held)" : ""}`,
           `decode+update ${median(stats.updateMs).toFixed(2)} ms  parse ${median(stats.parseMs).toFixed(2)} ms  ${(stats.frameBytes / 1024).toFixed(0)} KiB/frame`,
@@ -962,6 +1046,32 @@ function drawReadout(): void {
 // What a draw costs is measured as the delay it causes: the time from the draw to the next
 // animation callback beyond one display period (presenting happens after the script returns).
 const MIN_DRAW_INTERVAL_MS = view.software ? 100 : 0;
+// Thinning (SceneView.farStride): a draw that costs more than THIN_ABOVE_MS (the page then draws
+// fewer than about 8 frames a second on the CPU, 20 with a GPU) doubles the stride of the bodies
+// drawn away from the fixation, and one under a third of it halves the stride again; at most
+// once a second, so that each stride's cost is measured before the next change.
+const THIN_ABOVE_MS = view.software ? 60 : 25;
+const MAX_FAR_STRIDE = 64;
+let lastThin = 0;
+function thin(t: number): void {
+  if (!draw.thin || t - lastThin < 1000) return;
+  lastThin = t;
+  const k = view.farStride;
+  let next = k;
+  if (stats.drawMs > THIN_ABOVE_MS && k < MAX_FAR_STRIDE) next = 2 * k;
+  else if (stats.drawMs < THIN_ABOVE_MS / 3 && k > 1) next = k / 2;
+  if (next === k) return;
+  view.setFarStride(next);
+  blind?.view.setFarStride(next);
+}
+
+/** The readout's line on what is drawn, when not every body is. */
+function thinned(): string[] {
+  const { far, drawn } = view.farCounts;
+  if (view.farStride === 1 || drawn === far) return [];
+  return [`drawn: every body within the foveal region, ${drawn} of the ${far} beyond (1 in ${view.farStride}: drawing them all took this browser too long)`];
+}
+
 let lastPlot = 0;
 let lastDraw = 0;
 let drawCost = 0;
@@ -977,6 +1087,7 @@ function animate(t: number): void {
   }
   lastTick = t;
   drewLastTick = false;
+  thin(t);
   if (t - lastDraw >= Math.max(drawCost, MIN_DRAW_INTERVAL_MS)) {
     view.render();
     if (split.on && blind) {

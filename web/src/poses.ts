@@ -105,3 +105,24 @@ export function forEachPair(bytes: Uint8Array, f: (a: number, b: number) => void
   const v = view(bytes);
   for (let o = 0; o + 8 <= bytes.length; o += 8) f(v.getUint32(o, true), v.getUint32(o + 4, true));
 }
+
+/** What an audit found of a deemed pair (`Collisions.deemed_truth`). */
+export const enum DeemedTruth {
+  NotAudited = 0,
+  Touching = 1,
+  Apart = 2,
+}
+
+/**
+ * Call `f(a, b, truth)` for every deemed pair of a collision list with what the frame's audit
+ * found of it (`NotAudited` for every pair of a frame without an audit).
+ */
+export function forEachDeemed(
+  c: { deemed: Uint8Array; deemedTruth: Uint8Array },
+  f: (a: number, b: number, truth: DeemedTruth) => void,
+): void {
+  const v = view(c.deemed), t = c.deemedTruth;
+  for (let o = 0, k = 0; o + 8 <= c.deemed.length; o += 8, k++) {
+    f(v.getUint32(o, true), v.getUint32(o + 4, true), (t[k] ?? 0) as DeemedTruth);
+  }
+}

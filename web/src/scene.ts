@@ -9,7 +9,12 @@ import { peripheralStarGeometry, starDims, starGeometry } from "./star";
 export const COLOURS = {
   body: new THREE.Color(0x7f8ea3),
   real: new THREE.Color(0x2fbf71),
+  /** Deemed colliding: wrong (truly apart, a visible gap) when audited, or not audited. */
   deemed: new THREE.Color(0xff4d4d),
+  /** Deemed colliding and, by the frame's audit, truly touching: a right guess, nothing shows. */
+  touching: new THREE.Color(0xb08d57),
+  /** Deemed colliding in an audited frame whose audit passed the pair by (it samples). */
+  unaudited: new THREE.Color(0xffb3b3),
   /** Every body but the pair in a close-up (see focusOn). */
   dimmed: new THREE.Color(0x2a3038),
   /** The body picked for inspection, and its pairs that are neither real nor deemed. */
@@ -22,8 +27,8 @@ export const COLOURS = {
  * Okabe-Ito blue and orange (told apart under every common colour-vision deficiency).
  */
 export const PALETTES = {
-  standard: { real: 0x2fbf71, deemed: 0xff4d4d, separate: 0x5c7cfa },
-  "colour-blind": { real: 0x0072b2, deemed: 0xe69f00, separate: 0xcc79a7 },
+  standard: { real: 0x2fbf71, deemed: 0xff4d4d, touching: 0xb08d57, unaudited: 0xffb3b3, separate: 0x5c7cfa },
+  "colour-blind": { real: 0x0072b2, deemed: 0xe69f00, touching: 0x56b4e9, unaudited: 0xf0e442, separate: 0xcc79a7 },
 } as const;
 export type PaletteName = keyof typeof PALETTES;
 
@@ -32,6 +37,8 @@ export function usePalette(name: PaletteName): void {
   const p = PALETTES[name];
   COLOURS.real.set(p.real);
   COLOURS.deemed.set(p.deemed);
+  COLOURS.touching.set(p.touching);
+  COLOURS.unaudited.set(p.unaudited);
   COLOURS.separate.set(p.separate);
 }
 
@@ -56,6 +63,16 @@ export class SceneView {
    * and height): an ellipse about the fixation. Null: everywhere.
    */
   detailRegion: { x: number; y: number; rx: number; ry: number } | null = null;
+  /**
+   * Thinning, for a browser that cannot draw every body at a usable rate: of the bodies outside
+   * the detail region one in `farStride` is drawn (by body index, so the same bodies stay drawn
+   * from frame to frame and a colour's share among them is what it is among all), while every body
+   * reaching into the region is. 1: every body. Only where there is a region (the server's view
+   * with a fixation).
+   */
+  farStride = 1;
+  /** At the last split: bodies outside the detail region, and how many of them were drawn. */
+  readonly farCounts = { far: 0, drawn: 0 };
   /** Every body's pose and colour as the frame gave them, before the split between the meshes. */
   private poses: Float32Array = new Float32Array(0);
   private bodies = 0;
@@ -362,6 +379,14 @@ export class SceneView {
     this.dirty = false;
   }
 
+  /** Draw one in `k` of the bodies outside the detail region (see farStride). */
+  setFarStride(k: number): void {
+    const stride = Math.max(1, Math.floor(k));
+    if (stride === this.farStride) return;
+    this.farStride = stride;
+    this.dirty = true;
+  }
+
   /** Where the full tessellation is drawn (see detailRegion). */
   setDetailRegion(r: { x: number; y: number; rx: number; ry: number } | null): void {
     const o = this.detailRegion;
@@ -385,6 +410,8 @@ export class SceneView {
       c: mesh.instanceColor!.array as Float32Array,
       n: 0,
     }));
+    const stride = region ? this.farStride : 1;
+    let far = 0, farDrawn = 0;
     for (let i = 0; i < this.bodies; i++) {
       const o = 16 * i;
       let near = true;
@@ -400,6 +427,11 @@ export class SceneView {
           near = (dx / rx) ** 2 + (dy / ry) ** 2 <= 1;
         }
       }
+      if (!near) {
+        far++;
+        if (i % stride !== 0) continue;
+        farDrawn++;
+      }
       const t = out[near ? 0 : 1];
       const to = 16 * t.n;
       for (let k = 0; k < 16; k++) t.m[to + k] = m[o + k];
@@ -408,6 +440,8 @@ export class SceneView {
       t.c[3 * t.n + 2] = col[3 * i + 2];
       t.n++;
     }
+    this.farCounts.far = far;
+    this.farCounts.drawn = farDrawn;
     [fine, coarse].forEach((mesh, k) => {
       mesh.count = out[k].n;
       mesh.instanceMatrix.needsUpdate = true;
@@ -442,6 +476,11 @@ export class SceneView {
       }
     });
     this.dirty = true;
+  }
+
+  /** A body's colour as last set (r, g, b in 0..1): what the browser tests read instead of pixels. */
+  colourOf(body: number): number[] {
+    return Array.from(this.colours.subarray(3 * body, 3 * body + 3));
   }
 
   /**
