@@ -28,6 +28,11 @@ use crate::transport::{self, ConnectionLimits};
 /// the side by side (`--compare`) holds 60 fps beside it (docs/BENCHMARKS.md "Side by side").
 pub const DEFAULT_BODIES: u32 = 5000;
 
+/// Bodies of the staged demonstration (`--demo`).
+pub const DEMO_BODIES: u32 = 5000;
+/// Sphere tests a frame of the staged demonstration (`--demo`).
+pub const DEMO_TESTS: u64 = 10_000;
+
 /// Budget the server starts with: a real one, wall clock for the whole frame, a quarter of the
 /// 60 Hz frame period. What is deemed then depends on the machine, as in an application.
 pub const DEFAULT_BUDGET: &str = "4ms";
@@ -112,6 +117,16 @@ pub struct Cli {
     /// Compute the exact answer for every deemed pair (true false positives, true Δ and P).
     #[arg(long, env = "FOVEAL_AUDIT")]
     pub audit: bool,
+    /// A staged demonstration, for a first look on any machine: 5,000 bodies under a budget of
+    /// 10,000 sphere tests a frame (the same work whatever the machine, where the default's
+    /// wall-clock budget deems what the machine cannot settle) with the side by side against
+    /// round-robin on, so that the page colours the wrong guesses (deemed pairs truly apart) in
+    /// both views. With the gaze held, the share of the pairs within 5 degrees of it left as wrong
+    /// guesses is about half the share beyond (docs/BENCHMARKS.md "Side by side"). The budget is
+    /// chosen to show the effect, not by what a frame can afford: the page and the log say it is
+    /// staged. It sets -n, --budget and --compare, so it is not combined with them.
+    #[arg(long, env = "FOVEAL_DEMO", conflicts_with_all = ["bodies", "budget", "compare"])]
+    pub demo: bool,
     /// The side by side: also settle every frame with a gaze-blind collider (`round-robin` under
     /// the same budget, or `exact`) and send its metrics and collisions beside the frame's
     /// (`off`, `round-robin`, `exact`), with both sides' true error measured on the same pairs.
@@ -378,6 +393,10 @@ impl Cli {
         sim.schedule_model = self.schedule_model.0;
         sim.measure_model = self.measure_model.0;
         sim.audit = self.audit;
+        if self.demo {
+            sim.scene.bodies = DEMO_BODIES;
+            sim.budget = BudgetSpec::SphereTests(DEMO_TESTS);
+        }
         sim.fovea_first = self.fovea_first;
         sim.display.width_px = self.display_width_px;
         sim.display.height_px = self.display_height_px;
@@ -415,7 +434,11 @@ impl Cli {
                 designs_dir: self.psych_designs.clone(),
             },
             connections,
-            compare: self.compare,
+            compare: if self.demo {
+                crate::compare::Compare::RoundRobin
+            } else {
+                self.compare
+            },
             ..ServerConfig::default()
         };
         config.validate()?;
@@ -630,6 +653,29 @@ mod tests {
             PerceptualFunction::F3 { e2, .. } if e2 == 100.0
         ));
         assert_eq!(cli.log_format, LogFormat::Json);
+    }
+
+    #[test]
+    fn the_demo_is_a_staged_preset_and_not_combined_with_what_it_sets() {
+        let c = Cli::try_parse_from(["foveal-server", "--demo"])
+            .expect("parse")
+            .server_config()
+            .expect("valid");
+        assert_eq!(c.sim.scene.bodies, DEMO_BODIES);
+        assert_eq!(c.sim.budget, BudgetSpec::SphereTests(DEMO_TESTS));
+        assert_eq!(c.compare, crate::compare::Compare::RoundRobin);
+        for clash in [["-n", "100"], ["--budget", "4ms"], ["--compare", "off"]] {
+            let e = Cli::try_parse_from(["foveal-server", "--demo", clash[0], clash[1]])
+                .expect_err("clashes")
+                .to_string();
+            assert!(e.contains("--demo"), "{e}");
+        }
+        // What it leaves alone stays the user's.
+        let c = Cli::try_parse_from(["foveal-server", "--demo", "--seed", "7", "--audit"])
+            .expect("parse")
+            .server_config()
+            .expect("valid");
+        assert_eq!((c.sim.scene.seed, c.sim.audit), (7, true));
     }
 
     #[test]

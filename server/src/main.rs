@@ -9,6 +9,14 @@ async fn main() -> anyhow::Result<()> {
     let cli = Cli::parse();
     foveal_server::telemetry::init(&cli.log_level, cli.log_format)?;
     let mut config = cli.server_config()?;
+    if cli.demo {
+        tracing::warn!(
+            bodies = foveal_server::cli::DEMO_BODIES,
+            sphere_tests = foveal_server::cli::DEMO_TESTS,
+            "--demo: a staged demonstration, with a sphere-test budget chosen to show the effect \
+             rather than one this machine's frame time calls for, and the side by side on"
+        );
+    }
     config.security = cli.security()?;
     let listener = tokio::net::TcpListener::bind(cli.addr)
         .await
