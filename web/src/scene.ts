@@ -14,7 +14,7 @@ export const COLOURS = {
   /** Deemed colliding and, by the frame's audit, truly touching: a right guess, nothing shows. */
   touching: new THREE.Color(0xb08d57),
   /** Deemed colliding in an audited frame whose audit passed the pair by (it samples). */
-  unaudited: new THREE.Color(0xffb3b3),
+  unaudited: new THREE.Color(0xa58cc8),
   /** Every body but the pair in a close-up (see focusOn). */
   dimmed: new THREE.Color(0x2a3038),
   /** The body picked for inspection, and its pairs that are neither real nor deemed. */
@@ -27,7 +27,7 @@ export const COLOURS = {
  * Okabe-Ito blue and orange (told apart under every common colour-vision deficiency).
  */
 export const PALETTES = {
-  standard: { real: 0x2fbf71, deemed: 0xff4d4d, touching: 0xb08d57, unaudited: 0xffb3b3, separate: 0x5c7cfa },
+  standard: { real: 0x2fbf71, deemed: 0xff4d4d, touching: 0xb08d57, unaudited: 0xa58cc8, separate: 0x5c7cfa },
   "colour-blind": { real: 0x0072b2, deemed: 0xe69f00, touching: 0x56b4e9, unaudited: 0xf0e442, separate: 0xcc79a7 },
 } as const;
 export type PaletteName = keyof typeof PALETTES;

@@ -80,33 +80,40 @@ describe("side by side (N = 2,000, 3,000 sphere tests)", { skip }, () => {
   });
 });
 
-// With FOVEAL_SCREENSHOT set: the README's picture of the side by side, at the server's default
-// scene and budget started with `--compare round-robin`, the mouse resting off centre.
-describe("side by side at the defaults, for the README's picture", { skip: skip || !process.env.FOVEAL_SCREENSHOT }, () => {
-  let server, browser, page;
+// With FOVEAL_SCREENSHOT set: the README's pictures of the side by side, at the server's default
+// scene and budget started with `--compare round-robin`, and with `--demo`, the mouse resting off
+// centre and every body drawn (no thinning).
+for (const [name, args] of [
+  ["side-by-side.png", ["--compare", "round-robin"]],
+  ["demo.png", ["--demo"]],
+]) {
+  describe(`side by side for the README's picture (${args.join(" ")})`, { skip: skip || !process.env.FOVEAL_SCREENSHOT }, () => {
+    let server, browser, page;
 
-  before(async () => {
-    server = await startServer(await freePort(), ["--compare", "round-robin"]);
-    browser = await launch();
-    page = await browser.browser.newPage();
-    await page.goto(server.url);
-  });
+    before(async () => {
+      server = await startServer(await freePort(), args);
+      browser = await launch();
+      page = await browser.browser.newPage();
+      await page.goto(server.url);
+    });
 
-  after(async () => {
-    await browser?.close();
-    await server?.stop();
-  });
+    after(async () => {
+      await browser?.close();
+      await server?.stop();
+    });
 
-  test("docs/figures/side-by-side.png", async () => {
-    assert.ok(await waitFor(() => page.evaluate(() => window.foveal.split.frames.length > 5), 20_000, 100), "no compared frames");
-    const box = await page.locator("#scene").boundingBox();
-    await page.mouse.move(box.x + 0.3 * box.width, box.y + 0.4 * box.height);
-    await sleep(4_000);
-    const f = await page.evaluate(() => window.foveal.split.frames.slice(-60));
-    const mean = (k) => f.reduce((a, x) => a + x[k], 0) / f.length;
-    console.log(`# picture: last ${f.length} frames, true P gaze-steered ${mean("gaze").toFixed(1)}, gaze-blind ${mean("blind").toFixed(1)}`);
-    const dir = join(repo, "docs", "figures");
-    mkdirSync(dir, { recursive: true });
-    await page.screenshot({ path: join(dir, "side-by-side.png") });
+    test(`docs/figures/${name}`, async () => {
+      assert.ok(await waitFor(() => page.evaluate(() => window.foveal.split.frames.length > 5), 20_000, 100), "no compared frames");
+      await page.uncheck("#draw-thin");
+      const box = await page.locator("#scene").boundingBox();
+      await page.mouse.move(box.x + 0.3 * box.width, box.y + 0.4 * box.height);
+      await sleep(4_000);
+      const f = await page.evaluate(() => window.foveal.split.frames.slice(-60));
+      const mean = (k) => f.reduce((a, x) => a + x[k], 0) / f.length;
+      console.log(`# picture: last ${f.length} frames, true P gaze-steered ${mean("gaze").toFixed(1)}, gaze-blind ${mean("blind").toFixed(1)}`);
+      const dir = join(repo, "docs", "figures");
+      mkdirSync(dir, { recursive: true });
+      await page.screenshot({ path: join(dir, name) });
+    });
   });
-});
+}
