@@ -6,8 +6,10 @@
 //! not, its true gap, its exact cost). A scheduler's true P is then the sum of the true weights of
 //! the pairs it deemed, which is what the audit computes, without re-running the audit per
 //! scheduler. The bound at a budget is the fractional-knapsack optimum over the same truths
-//! ([`foveal_engine::clairvoyant`]); since a sphere-test budget may be overrun by the last step, the
-//! bound of a frame is taken at the most tests any scheduler of that budget actually used.
+//! ([`foveal_engine::clairvoyant`]), taken at what the budget buys: its sphere tests, or under a
+//! wall-clock budget the tests the exact kernel does in that time at its rate measured in the same
+//! run; and at least at the most tests any scheduler of that budget used (the last step may overrun
+//! a sphere-test budget).
 //!
 //! Budgets are in sphere tests, as fractions of the frame's exact cost (deterministic), and in
 //! wall-clock time, as fractions of the exact narrow phase's time on the machine as it runs the
@@ -445,6 +447,9 @@ pub struct RunResult {
     pub(crate) cells: Vec<Vec<Vec<Cell>>>,
     /// `[condition][budget]`: mean bound.
     pub(crate) bound: Vec<Vec<f64>>,
+    /// `[condition][budget]`: mean sphere tests a frame the bound was taken at (what the budget
+    /// buys, or the most any scheduler used).
+    pub(crate) bound_tests: Vec<Vec<f64>>,
     /// `[condition]`: mean true P with every pair deemed.
     pub(crate) all_deemed: Vec<f64>,
     /// `[condition]`: frames counted (fewer than `frames` under saccadic suppression).
@@ -485,6 +490,23 @@ fn time_exact(c: &mut Collider, input: &FrameInput<'_>, clock: &dyn Clock) -> (u
     let mut p = PhaseProfile::default();
     c.collide(input, None, FrameBudget::Unlimited, clock, &mut r, &mut p);
     (p.prioritise_ns + p.narrow_ns, r.sphere_tests)
+}
+
+/// The sphere tests a frame's bound is taken at: what `budget` buys, and at least `used`, the most
+/// tests any scheduler of that budget used (the last step may overrun a sphere-test budget).
+/// Under a wall-clock budget what it buys is the tests the exact kernel does in that time at its
+/// rate in this run (`rate_ns` a test, the exact frames' window median; the budget is that
+/// fraction of `base_ns`), not what a scheduler managed: a scheduler's own overhead must not lower
+/// the bound it is judged by. Under a sphere-test budget, its count (a fraction of
+/// `frame_tests`, the frame's exact cost).
+fn bound_tests_of(budget: &Budget, frame_tests: u64, base_ns: f64, rate_ns: f64, used: u64) -> u64 {
+    let buys = match *budget {
+        Budget::Wall(x) if rate_ns > 0.0 => (x * base_ns / rate_ns).floor() as u64,
+        Budget::Wall(_) => 0,
+        Budget::Tests(x) => (x * frame_tests as f64).round() as u64,
+        Budget::FixedTests(k) => k,
+    };
+    buys.max(used)
 }
 
 /// The last [`BASE_WINDOW`] exact frames' (time, sphere tests), and their medians.
@@ -771,6 +793,7 @@ pub fn run_frames_parts(
     let mut bases = Vec::with_capacity(frames as usize);
     let mut rates = Vec::with_capacity(frames as usize);
     let mut base_ns = window.median();
+    let mut rate_ns = window.median_rate();
     // Wall-clock runs first see the last timing frame, uncounted (gaze at the screen centre), as
     // a server that has been running would have seen the frame before: they learn what their
     // ordering costs here and keep that frame's witnesses. Sphere-test runs do not, so their rows
@@ -811,6 +834,7 @@ pub fn run_frames_parts(
         .iter()
         .map(|p| vec![vec![0.0; p.budgets.len()]; p.conditions.len()])
         .collect();
+    let mut bound_tests = bound.clone();
     let mut all_deemed: Vec<Vec<f64>> = parts
         .iter()
         .map(|p| vec![0.0; p.conditions.len()])
@@ -843,8 +867,9 @@ pub fn run_frames_parts(
         if cfg.timing_frames > 0 {
             window.push(time_exact(&mut exact, &input, &clock));
             base_ns = window.median();
+            rate_ns = window.median_rate();
             bases.push(base_ns);
-            rates.push(window.median_rate());
+            rates.push(rate_ns);
         }
         clairvoyant::truths(input.tree, input.world, input.candidates, &mut truths);
         let fix_px = input.viewer.to_pixels(fixation.x, fixation.y);
@@ -934,18 +959,20 @@ pub fn run_frames_parts(
                 }
             }
         }
-        // The bound of a frame at a budget: at the most tests any of its schedulers used.
         for (pi, p) in parts.iter().enumerate() {
             for ci in 0..p.conditions.len() {
                 if !count[pi][ci] {
                     continue;
                 }
                 for bi in 0..p.budgets.len() {
-                    let max_tests = run_of[pi][ci][bi]
+                    let used = run_of[pi][ci][bi]
                         .iter()
                         .map(|&u| run_tests[u])
                         .max()
                         .unwrap_or(0);
+                    let max_tests =
+                        bound_tests_of(&p.budgets[bi], frame_tests, base_ns, rate_ns, used);
+                    bound_tests[pi][ci][bi] += max_tests as f64;
                     bound[pi][ci][bi] +=
                         clairvoyant::bound_sorted(&items[model_of[pi][ci]], max_tests);
                 }
@@ -963,6 +990,7 @@ pub fn run_frames_parts(
     for (pi, p) in parts.iter().enumerate() {
         let mut cells = std::mem::take(&mut cells[pi]);
         let mut bound = std::mem::take(&mut bound[pi]);
+        let mut bound_tests = std::mem::take(&mut bound_tests[pi]);
         let mut all_deemed = std::mem::take(&mut all_deemed[pi]);
         for ci in 0..p.conditions.len() {
             let k = 1.0 / f64::from(counted[pi][ci].max(1));
@@ -971,7 +999,7 @@ pub fn run_frames_parts(
                 c.tests *= k;
                 c.prioritise_ms *= k;
             }
-            for b in &mut bound[ci] {
+            for b in bound[ci].iter_mut().chain(bound_tests[ci].iter_mut()) {
                 *b *= k;
             }
             all_deemed[ci] *= k;
@@ -987,6 +1015,7 @@ pub fn run_frames_parts(
             exact_tests: exact_tests * k,
             cells,
             bound,
+            bound_tests,
             all_deemed,
             counted: std::mem::take(&mut counted[pi]),
         });
@@ -1160,7 +1189,16 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
                         &|r| r.cells[ci][bi][j].prioritise_ms,
                     );
                 }
-                push("clairvoyant", &|r| r.bound[ci][bi], &|_| f64::NAN, &|_| {
+                // Its tests over round-robin's: what the budget buys against what round-robin
+                // managed (unknown in records written before the bound's tests were kept).
+                let bound_tests = |r: &RunResult| {
+                    r.bound_tests
+                        .get(ci)
+                        .and_then(|b| b.get(bi))
+                        .copied()
+                        .unwrap_or(f64::NAN)
+                };
+                push("clairvoyant", &|r| r.bound[ci][bi], &bound_tests, &|_| {
                     f64::NAN
                 });
             }
@@ -1715,6 +1753,42 @@ mod tests {
         let md = markdown(&cfg, &runs, &rows);
         assert!(md.contains("| priced |") && md.contains("| clairvoyant |"));
         assert!(md.contains("halves round-robin's true P"));
+    }
+
+    /// Under a wall-clock budget the bound is taken at the tests the exact kernel does in that
+    /// time at its measured rate, however few a scheduler managed; under a sphere-test budget at
+    /// the budget's own count; never below what a scheduler used.
+    #[test]
+    fn the_bound_is_taken_at_what_the_budget_buys() {
+        // 0.3 of a 1 ms exact narrow phase at 10 ns a test buys 30,000 tests.
+        let wall = Budget::Wall(0.3);
+        assert_eq!(bound_tests_of(&wall, 5_000, 1e6, 10.0, 900), 30_000);
+        assert_eq!(bound_tests_of(&wall, 5_000, 1e6, 10.0, 31_000), 31_000);
+        assert_eq!(bound_tests_of(&wall, 5_000, 1e6, 0.0, 900), 900);
+        assert_eq!(
+            bound_tests_of(&Budget::Tests(0.1), 5_000, 1e6, 10.0, 480),
+            500
+        );
+        assert_eq!(
+            bound_tests_of(&Budget::Tests(0.1), 5_000, 1e6, 10.0, 507),
+            507
+        );
+        assert_eq!(
+            bound_tests_of(&Budget::FixedTests(800), 5_000, 1e6, 10.0, 0),
+            800
+        );
+        // In a run: the mean over frames is at least every scheduler's mean, and still below
+        // every scheduler's true P.
+        let cfg = tiny(6, 3, vec![Budget::Tests(0.1), Budget::Wall(0.3)]);
+        for r in &run(&cfg).expect("runs") {
+            for bi in 0..2 {
+                let used = r.cells[0][bi].iter().map(|c| c.tests).fold(0.0, f64::max);
+                assert!(r.bound_tests[0][bi] >= used - 1e-9);
+                for c in &r.cells[0][bi] {
+                    assert!(c.true_p >= r.bound[0][bi] - 1e-12);
+                }
+            }
+        }
     }
 
     #[test]

@@ -689,6 +689,10 @@ pub struct OpenRecord {
     pub cells: Vec<Vec<[Num; 3]>>,
     /// `[budget]`: mean clairvoyant bound.
     pub bound: Vec<Num>,
+    /// `[budget]`: mean sphere tests a frame the bound was taken at (empty in records written
+    /// before it was kept).
+    #[serde(default)]
+    pub bound_tests: Vec<Num>,
     /// Mean true P with every pair deemed.
     pub all_deemed: Num,
     /// Frames counted.
@@ -718,6 +722,7 @@ impl OpenRecord {
                     .collect()
             }),
             bound: r.bound.get(ci).map_or_else(Vec::new, |b| nums(b)),
+            bound_tests: r.bound_tests.get(ci).map_or_else(Vec::new, |b| nums(b)),
             all_deemed: Num(r.all_deemed.get(ci).copied().unwrap_or(f64::NAN)),
             counted: r.counted.get(ci).copied().unwrap_or(0),
         }
@@ -782,6 +787,7 @@ fn assemble(n: u32, seed: u64, records: &[&OpenRecord]) -> Option<RunResult> {
             })
             .collect(),
         bound: records.iter().map(|r| floats(&r.bound)).collect(),
+        bound_tests: records.iter().map(|r| floats(&r.bound_tests)).collect(),
         all_deemed: records.iter().map(|r| r.all_deemed.0).collect(),
         counted: records.iter().map(|r| r.counted).collect(),
     })
