@@ -448,6 +448,7 @@ mod tests {
                 true_false_positives: 2,
                 true_geometric_inaccuracy: 0.25,
                 true_perceived_inaccuracy: 0.125,
+                ..Default::default()
             });
         }
         let row = csv_row(&audited, 0.0);

@@ -9,7 +9,7 @@ use foveal_engine::narrow_phase::{PairState, PairStatus};
 use foveal_engine::shape::Star;
 use foveal_engine::{
     BudgetSpec, ConfigError, DeemedTruth, EccentricityUnit, FrameReport, PerceptualFunction,
-    PerceptualModel, SchedulerKind, SimConfig, Simulation, Truth,
+    PerceptualModel, SchedulerKind, SimConfig, Simulation, TreeKind, Truth,
 };
 use foveal_proto::pb;
 
@@ -59,6 +59,32 @@ pub fn truth_to_pb(t: Truth) -> pb::Truth {
         Truth::Shape => pb::Truth::Shape,
         Truth::LeafSpheres => pb::Truth::LeafSpheres,
     }
+}
+
+/// Engine tree kind → protocol enum.
+pub fn tree_to_pb(t: TreeKind) -> pb::Tree {
+    match t {
+        TreeKind::Parts => pb::Tree::Parts,
+        TreeKind::Fitted => pb::Tree::Fitted,
+        TreeKind::Octree => pb::Tree::Octree,
+    }
+}
+
+/// Protocol enum → engine tree kind; `None` for "unspecified" (keep the current one).
+pub fn tree_from_pb(raw: i32) -> Result<Option<TreeKind>, ConfigError> {
+    let t = pb::Tree::try_from(raw).map_err(|_| {
+        invalid(
+            "scene.tree",
+            raw,
+            "must be a Tree enum value: 0 (unspecified, keep), 1 (TREE_PARTS), 2 (TREE_FITTED) or 3 (TREE_OCTREE)",
+        )
+    })?;
+    Ok(match t {
+        pb::Tree::Unspecified => None,
+        pb::Tree::Parts => Some(TreeKind::Parts),
+        pb::Tree::Fitted => Some(TreeKind::Fitted),
+        pb::Tree::Octree => Some(TreeKind::Octree),
+    })
 }
 
 /// Protocol enum → engine truth; `None` for "unspecified" (keep the current one). The error
@@ -216,6 +242,7 @@ pub fn scene_config_to_pb(c: &SimConfig, frame_rate_hz: f64) -> pb::SceneConfig 
         }),
         truth: truth_to_pb(s.truth) as i32,
         compare: pb::Compare::Off as i32,
+        tree: tree_to_pb(s.tree) as i32,
     }
 }
 
@@ -253,6 +280,9 @@ pub fn merge_scene_config(
     s.max_spin = pick_f64(s.max_spin, req.max_spin);
     if let Some(t) = truth_from_pb(req.truth)? {
         s.truth = t;
+    }
+    if let Some(t) = tree_from_pb(req.tree)? {
+        s.tree = t;
     }
     if let Some(k) = scheduler_from_pb(req.scheduler)? {
         c.scheduler = k;
@@ -312,6 +342,15 @@ pub fn merge_masked(
             "min_speed" => s.min_speed = req.min_speed,
             "max_speed" => s.max_speed = req.max_speed,
             "max_spin" => s.max_spin = req.max_spin,
+            "tree" => {
+                s.tree = tree_from_pb(req.tree)?.ok_or_else(|| {
+                    invalid(
+                        "scene.tree",
+                        "TREE_UNSPECIFIED",
+                        "must name a tree when listed in update_mask",
+                    )
+                })?;
+            }
             "truth" => {
                 s.truth = truth_from_pb(req.truth)?.ok_or_else(|| {
                     invalid(
@@ -414,7 +453,8 @@ pub fn changed_fields(before: &pb::SceneConfig, after: &pb::SceneConfig) -> Vec<
         frame_rate_hz,
         display,
         truth,
-        compare
+        compare,
+        tree
     );
     changed
 }
@@ -898,6 +938,6 @@ mod tests {
         let q = sim.world().orientation[3].as_quat().to_array();
         assert_eq!(p.orientations_f32().nth(3), Some(q));
         let d = scene_description(&sim, 60.0);
-        assert_eq!(d.tree.expect("tree").spheres_per_level, vec![1, 8, 32, 80]);
+        assert_eq!(d.tree.expect("tree").spheres_per_level, vec![1, 7, 20, 80]);
     }
 }

@@ -91,8 +91,10 @@ async fn get_scene_describes_the_running_scene() {
     let config = scene.config.expect("config");
     assert_eq!((config.bodies, config.frame_rate_hz), (100, 75.0));
     let tree = scene.tree.expect("tree");
-    assert_eq!(tree.spheres_per_level, [1, 8, 32, 80]);
-    assert_eq!(tree.spheres.len(), 121);
+    // The default tree: the root, the star's core and six spikes, their runs of leaves, the leaves.
+    assert_eq!(config.tree, pb::Tree::Parts as i32);
+    assert_eq!(tree.spheres_per_level, [1, 7, 20, 80]);
+    assert_eq!(tree.spheres.len(), 108);
     assert!((scene.volume_side - 10f64.cbrt()).abs() < 1e-12);
     let camera = scene.camera.expect("camera");
     assert!((camera.aspect - 1680.0 / 1050.0).abs() < 1e-12);

@@ -3,7 +3,8 @@
 //!
 //! Training runs: N = 500, 2,000 and 10,000, seeds 1-2; held-out runs: the same N, seeds 101-102.
 //! The table (`server/engine/data/calibration-shape.bin` for the shape truth,
-//! `calibration-leaf-spheres.bin` for the leaf truth) is written in the engine's binary format; the
+//! `calibration-leaf-spheres.bin` for the leaf truth, each on the default tree; `-octree` before
+//! `.bin` for the paper's octree) is written in the engine's binary format; the
 //! reliability report (predicted probability of "not colliding" against the observed frequency, in
 //! ten bins, with the Brier score and the expected calibration error) is written as markdown.
 
@@ -11,7 +12,7 @@ use std::fmt::Write as _;
 
 use foveal_engine::calibrate::{Observations, ReliabilityRow};
 use foveal_engine::schedule::calibration::Calibration;
-use foveal_engine::{SceneConfig, Truth};
+use foveal_engine::{SceneConfig, TreeKind, Truth};
 
 use crate::error::BenchError;
 
@@ -28,6 +29,9 @@ pub struct CalibrateConfig {
     pub warmup: u32,
     /// The truth the table prices outcomes on (each truth ships its own table).
     pub truth: Truth,
+    /// The sphere tree the table's states are traversed in (the default tree and the octree
+    /// each ship their own).
+    pub tree: TreeKind,
 }
 
 impl Default for CalibrateConfig {
@@ -38,6 +42,7 @@ impl Default for CalibrateConfig {
             test_seeds: vec![101, 102],
             warmup: 60,
             truth: Truth::Shape,
+            tree: TreeKind::default(),
         }
     }
 }
@@ -64,6 +69,7 @@ fn scenes(cfg: &CalibrateConfig, seeds: &[u64]) -> Vec<(SceneConfig, u32)> {
             seeds.iter().map(move |&s| {
                 let mut scene = SceneConfig::paper(n, s);
                 scene.truth = cfg.truth;
+                scene.tree = cfg.tree;
                 (scene, f)
             })
         })

@@ -61,6 +61,7 @@ pub mod shard;
 pub mod shard_error;
 pub mod stats;
 pub mod stress;
+pub mod trees;
 
 use std::fmt::Write as _;
 use std::path::PathBuf;

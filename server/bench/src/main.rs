@@ -61,6 +61,34 @@ enum Command {
     /// profiler wraps (a steady frame's instructions are the difference of two such runs of
     /// different lengths over the frames between them).
     Frames(FramesArgs),
+    /// The sphere tree kinds on identical frames: one steady frame's exact narrow phase, timed
+    /// under each tree in turn, round after round; sphere tests, medians and ratios to the
+    /// octree.
+    Trees(TreesArgs),
+}
+
+#[derive(Debug, Args)]
+struct TreesArgs {
+    /// Bodies.
+    #[arg(short = 'n', long, default_value_t = 10_000)]
+    n: u32,
+    /// Threads of the narrow phase.
+    #[arg(long, default_value_t = 1)]
+    threads: usize,
+    /// Rounds (each times every tree once).
+    #[arg(long, default_value_t = 40)]
+    rounds: u32,
+}
+
+fn trees(args: &TreesArgs) -> Result<()> {
+    for truth in foveal_engine::Truth::ALL {
+        let rows = foveal_bench::trees::compare(args.n, truth, args.threads, args.rounds)?;
+        println!(
+            "{}",
+            foveal_bench::trees::markdown(args.n, truth, args.threads, args.rounds, &rows)
+        );
+    }
+    Ok(())
 }
 
 #[derive(Debug, Args)]
@@ -530,6 +558,10 @@ struct CalibrateArgs {
     /// calibration-leaf-spheres.bin).
     #[arg(long, default_value = "shape")]
     truth: foveal_engine::Truth,
+    /// The sphere tree to calibrate on: `parts` (the default; the tables above) or `octree`
+    /// (the paper's; calibration-shape-octree.bin and calibration-leaf-spheres-octree.bin).
+    #[arg(long, default_value = "parts")]
+    tree: foveal_engine::TreeKind,
 }
 
 fn calibrate(args: &CalibrateArgs) -> Result<()> {
@@ -537,6 +569,7 @@ fn calibrate(args: &CalibrateArgs) -> Result<()> {
     use foveal_engine::schedule::calibration::Calibration;
     let cfg = cal::CalibrateConfig {
         truth: args.truth,
+        tree: args.tree,
         ..cal::CalibrateConfig::default()
     };
     let out = cal::run(&cfg).context("calibration failed")?;
@@ -571,9 +604,10 @@ fn calibrate(args: &CalibrateArgs) -> Result<()> {
             };
             bail!(
                 "{} is stale ({detail}): the engine changed what its traversal states predict; \
-                 regenerate it with `cargo run --release -p foveal-bench -- calibrate --truth {} --write {}`",
+                 regenerate it with `cargo run --release -p foveal-bench -- calibrate --truth {} --tree {} --write {}`",
                 path.display(),
                 args.truth.name(),
+                args.tree.name(),
                 path.display()
             );
         }
@@ -922,6 +956,9 @@ struct ScaleArgs {
     /// (the paper's leaf-sphere overlap).
     #[arg(long, default_value = "shape")]
     truth: foveal_engine::Truth,
+    /// The sphere tree: `parts` (the default), `fitted` or `octree` (the paper's).
+    #[arg(long, default_value = "parts")]
+    tree: foveal_engine::TreeKind,
     /// Output directory (scale.csv, scale.md).
     #[arg(long, default_value = foveal_bench::scale::DEFAULT_OUT)]
     out: PathBuf,
@@ -953,6 +990,7 @@ fn scale(args: &ScaleArgs) -> Result<()> {
         scheduler: args.scheduler,
         fovea_first: args.fovea_first,
         truth: args.truth,
+        tree: args.tree,
         repeat: args.repeat,
         out: args.out.clone(),
     };
@@ -983,6 +1021,7 @@ fn main() -> Result<()> {
         Command::Replay(args) => replay(&args.file, &args.options),
         Command::Merge(args) => merge(args),
         Command::Frames(args) => frames(args),
+        Command::Trees(args) => trees(args),
     }
 }
 

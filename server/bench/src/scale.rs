@@ -23,7 +23,7 @@ use std::time::Instant;
 use foveal_engine::broad_phase::BroadPhaseKind;
 use foveal_engine::{
     BudgetSpec, ConfigError, Fixation, PhaseProfile, SceneConfig, SchedulerKind, SimConfig,
-    Simulation, Truth,
+    Simulation, TreeKind, Truth,
 };
 use serde::{Deserialize, Serialize};
 
@@ -165,6 +165,10 @@ pub struct RunSpec {
     /// What "colliding" means (`SceneConfig::truth`).
     #[serde(default)]
     pub truth: Truth,
+    /// The sphere tree's hierarchy (`SceneConfig::tree`); the octree in results written before
+    /// it was recorded.
+    #[serde(default = "TreeKind::before_it_was_recorded")]
+    pub tree: TreeKind,
     /// Scene seed.
     pub seed: u64,
     /// Uncounted frames before the measured ones.
@@ -290,6 +294,8 @@ pub struct ScaleConfig {
     pub fovea_first: bool,
     /// The truth of every run.
     pub truth: Truth,
+    /// The sphere tree of every run.
+    pub tree: TreeKind,
     /// Rounds: the whole plan is run this many times, one round after another (1..=[`MAX_REPEAT`]).
     pub repeat: u32,
     /// Output directory.
@@ -313,6 +319,7 @@ impl Default for ScaleConfig {
             scheduler: SimConfig::default().scheduler,
             fovea_first: false,
             truth: Truth::default(),
+            tree: TreeKind::default(),
             repeat: 1,
             out: PathBuf::from(DEFAULT_OUT),
         }
@@ -432,6 +439,7 @@ impl ScaleConfig {
                     scheduler: self.scheduler,
                     fovea_first: self.fovea_first,
                     truth: self.truth,
+                    tree: self.tree,
                     seed: self.seed,
                     warmup,
                     frames,
@@ -454,6 +462,7 @@ fn sim_config(spec: &RunSpec) -> SimConfig {
     SimConfig {
         scene: SceneConfig {
             truth: spec.truth,
+            tree: spec.tree,
             ..SceneConfig::paper(spec.n, spec.seed)
         },
         budget: spec.mode.budget(),
@@ -1049,7 +1058,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "Paper scene (seed {}, truth {}), scheduler {}{}, fixation at the screen centre, wall clock. Whole step = \
+        "Paper scene (seed {}, truth {}, tree {}), scheduler {}{}, fixation at the screen centre, wall clock. Whole step = \
          `Instant` around `Simulation::step` (p99 nearest rank: the maximum below 100 frames); \
          phase shares = phase totals from `FrameReport.profile` over total step time; foveal exact = \
          frames in which no pair within 5° of the fixation was deemed and every region that may hold \
@@ -1060,6 +1069,7 @@ pub fn markdown(out: &ScaleOutput) -> String {
          phases are today's).\n",
         out.results.first().map_or(1, |r| r.spec.seed),
         out.results.first().map_or("-", |r| r.spec.truth.name()),
+        out.results.first().map_or("-", |r| r.spec.tree.name()),
         out.results.first().map_or("-", |r| r.spec.scheduler.name()),
         if out.results.first().is_some_and(|r| r.spec.fovea_first) {
             " (fovea first)"
@@ -1434,6 +1444,7 @@ mod tests {
             scheduler: SchedulerKind::Priced,
             fovea_first: false,
             truth: Truth::Shape,
+            tree: TreeKind::Parts,
             seed: 3,
             warmup: 2,
             frames: 7,

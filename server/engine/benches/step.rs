@@ -15,6 +15,7 @@
 //!   steady state (about 25 sphere tests per candidate pair, half of the pairs settled by the
 //!   root test); per sphere test in the throughput line.
 //!   `narrow_steady/{10000,100000}-leaf/{1,2}`: the same under the paper's leaf-sphere truth.
+//!   `...-octree/..`: the same frames with the paper's octree instead of the default parts tree.
 //! - `shape/{intersects,contact}/10000`: the shape level alone on the pairs of frame 61 whose
 //!   leaves overlap, per pair.
 //! - `foveal_pass/{stepped,one-go-1t,one-go-2t}/100000`: a whole-frame budget's foveal pass over
@@ -46,7 +47,8 @@ use foveal_engine::shape::Star;
 use foveal_engine::sphere_tree::SphereTree;
 use foveal_engine::world::World;
 use foveal_engine::{
-    BudgetSpec, Clock, FrozenClock, SceneConfig, SchedulerKind, SimConfig, Simulation, Truth,
+    BudgetSpec, Clock, FrozenClock, SceneConfig, SchedulerKind, SimConfig, Simulation, TreeKind,
+    Truth,
 };
 
 struct Mono(Instant);
@@ -193,29 +195,38 @@ fn narrow_steady(c: &mut Criterion) {
             Truth::Shape => n.to_string(),
             Truth::LeafSpheres => format!("{n}-leaf"),
         };
-        let mut sim = Simulation::new(cfg).expect("valid");
+        let mut sim = Simulation::new(cfg.clone()).expect("valid");
         for _ in 0..60 {
             sim.step(None, &FrozenClock);
         }
         let (before, before_pairs) = (sim.world().clone(), sim.candidate_pairs().to_vec());
         sim.step(None, &FrozenClock);
         let (world, pairs) = (sim.world().clone(), sim.candidate_pairs().to_vec());
-        let tree = sim.tree().clone();
-        for threads in [1usize, 2] {
-            let mut np = NarrowPhase::default();
-            np.reset(&before_pairs);
-            np.resolve_all(&tree, &before, threads);
-            np.remember_witnesses(before.len());
-            np.reset(&pairs);
-            np.resolve_all(&tree, &world, threads);
-            g.throughput(Throughput::Elements(np.tests));
-            g.bench_function(BenchmarkId::new(label.clone(), threads), |b| {
-                b.iter(|| {
-                    np.reset(&pairs);
-                    np.resolve_all(&tree, &world, threads);
-                    black_box(np.tests)
-                })
-            });
+        // The same frames under each tree: the leaves, and so the bodies' motion, are the same.
+        for kind in [TreeKind::Parts, TreeKind::Octree] {
+            let tree = SphereTree::build_kind(Star::new(cfg.scene.shape_radius), 4, kind)
+                .expect("tree")
+                .with_truth(truth);
+            let label = match kind {
+                TreeKind::Parts => label.clone(),
+                _ => format!("{label}-{kind}"),
+            };
+            for threads in [1usize, 2] {
+                let mut np = NarrowPhase::default();
+                np.reset(&before_pairs);
+                np.resolve_all(&tree, &before, threads);
+                np.remember_witnesses(before.len());
+                np.reset(&pairs);
+                np.resolve_all(&tree, &world, threads);
+                g.throughput(Throughput::Elements(np.tests));
+                g.bench_function(BenchmarkId::new(label.clone(), threads), |b| {
+                    b.iter(|| {
+                        np.reset(&pairs);
+                        np.resolve_all(&tree, &world, threads);
+                        black_box(np.tests)
+                    })
+                });
+            }
         }
     }
     g.finish();

@@ -19,7 +19,9 @@ impl Calibration {
     /// The shipped table for the paper's depth, or a table calibrated now for another depth.
     pub fn for_tree(tree: &SphereTree, scene: &SceneConfig) -> Result<Self, ConfigError> {
         let depth = tree.depth() as u8;
-        if let Some(shipped) = Self::shipped_for(tree.truth()).filter(|c| c.depth == depth) {
+        if let Some(shipped) =
+            Self::shipped_for_tree(tree.truth(), tree.kind()).filter(|c| c.depth == depth)
+        {
             return Ok(shipped);
         }
         // A small copy of the paper scene at this depth: a few hundred thousand state visits,
@@ -28,6 +30,7 @@ impl Calibration {
         small.depth = scene.depth;
         small.shape_radius = scene.shape_radius;
         small.truth = tree.truth();
+        small.tree = tree.kind();
         Ok(Observations::record(&[small], 30, 10)?.calibration())
     }
 }
@@ -119,8 +122,12 @@ impl Observations {
                 ..SimConfig::default()
             };
             let mut sim = Simulation::new(cfg)?;
-            let tree = SphereTree::build(Star::new(scene.shape_radius), scene.depth as usize)?
-                .with_truth(scene.truth);
+            let tree = SphereTree::build_kind(
+                Star::new(scene.shape_radius),
+                scene.depth as usize,
+                scene.tree,
+            )?
+            .with_truth(scene.truth);
             let inv_diameter = (0.5 / tree.root_radius()) as f32;
             let inv_r = 1.0 / scene.shape_radius;
             let mut np = NarrowPhase::default();
@@ -468,12 +475,16 @@ mod tests {
         ));
     }
 
-    /// Both truths' shipped tables read, for the paper's depth.
+    /// Both truths' shipped tables read, for the paper's depth, for the default tree and the
+    /// octree; the fitted octree ships none.
     #[test]
     fn the_shipped_tables_read() {
         for truth in Truth::ALL {
-            let cal = Calibration::shipped_for(truth).expect("shipped table reads");
-            assert_eq!(cal.depth(), 4, "{truth:?}");
+            for tree in [crate::TreeKind::Parts, crate::TreeKind::Octree] {
+                let cal = Calibration::shipped_for_tree(truth, tree).expect("shipped table reads");
+                assert_eq!(cal.depth(), 4, "{truth:?} {tree}");
+            }
+            assert!(Calibration::shipped_for_tree(truth, crate::TreeKind::Fitted).is_none());
         }
     }
 }

@@ -55,6 +55,72 @@ pub struct SceneConfig {
     /// then replays as it ran.
     #[serde(default = "Truth::before_it_was_recorded")]
     pub truth: Truth,
+    /// How the sphere tree groups the leaves (docs/DESIGN.md "Sphere tree"). The leaves, and so
+    /// every exact answer, are the same under each; what differs is how many sphere tests a pair
+    /// takes to settle. A serialised config without this field was written before it existed,
+    /// with the paper's octree, and is read as such.
+    #[serde(default = "TreeKind::before_it_was_recorded")]
+    pub tree: TreeKind,
+}
+
+/// The sphere tree's hierarchy over one and the same set of leaves (docs/DESIGN.md "Sphere
+/// tree"): the paper's octree cells, the same cells with every inner sphere fitted to the leaves
+/// below it, or fitted spheres over the star's parts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum TreeKind {
+    /// The paper's octree (section 2): each inner sphere circumscribes its grid cell, so it
+    /// reaches past the leaves below it (a level-2 sphere reaches 1.73R from the centre, the
+    /// root 1.11R). For the replication.
+    Octree,
+    /// The octree's cells, each inner sphere the smallest found that holds the leaves below it.
+    Fitted,
+    /// Level 2 grouped by the star's parts (the core and the six spikes), each part's leaves
+    /// under it by their octree cells, every inner sphere fitted: a pair of spikes far from each
+    /// other is told apart at level 2 instead of after a descent into both octants.
+    #[default]
+    Parts,
+}
+
+impl TreeKind {
+    /// Every kind, the default first.
+    pub const ALL: [TreeKind; 3] = [Self::Parts, Self::Fitted, Self::Octree];
+
+    /// Stable short name (`--tree` flags, CSV columns, reports).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Octree => "octree",
+            Self::Fitted => "fitted",
+            Self::Parts => "parts",
+        }
+    }
+
+    /// Parse a [`Self::name`].
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|t| t.name() == s)
+    }
+
+    /// The tree of a serialised config that does not name one: the paper's octree, the only
+    /// one before the kind was recorded.
+    pub fn before_it_was_recorded() -> Self {
+        Self::Octree
+    }
+}
+
+impl std::fmt::Display for TreeKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::str::FromStr for TreeKind {
+    type Err = ConfigError;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Self::from_name(s).ok_or_else(|| {
+            ConfigError::new("scene.tree", s, "must be `parts`, `fitted` or `octree`")
+        })
+    }
 }
 
 /// The definition of the exact answer a frame is measured against (docs/DESIGN.md "Exact answer").
@@ -127,6 +193,7 @@ impl Default for SceneConfig {
             max_spin: std::f64::consts::PI,
             origin: [0.0; 3],
             truth: Truth::Shape,
+            tree: TreeKind::Parts,
         }
     }
 }

@@ -86,7 +86,7 @@ pub use budget::FrameBudget;
 pub use clock::{Clock, FrozenClock};
 pub use config::{
     BudgetSpec, ConfigError, DEFAULT_RENUMBER_EVERY, MAX_BODIES, MAX_DEPTH, MAX_ORIGIN,
-    MAX_THREADS, PricedOptions, SceneConfig, SchedulerKind, SimConfig, Truth,
+    MAX_THREADS, PricedOptions, SceneConfig, SchedulerKind, SimConfig, TreeKind, Truth,
 };
 pub use fixation::Fixation;
 pub use perception::{

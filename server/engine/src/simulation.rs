@@ -65,8 +65,8 @@ impl Simulation {
     pub fn new(config: SimConfig) -> Result<Self, ConfigError> {
         config.validate()?;
         let sc = &config.scene;
-        let tree =
-            SphereTree::build(Star::new(sc.shape_radius), sc.depth as usize)?.with_truth(sc.truth);
+        let tree = SphereTree::build_kind(Star::new(sc.shape_radius), sc.depth as usize, sc.tree)?
+            .with_truth(sc.truth);
         let world = World::generate(sc);
         let side = sc.volume_side();
         let mut broad = BroadPhase::with_kind(

@@ -2,7 +2,7 @@
 
 use foveal_engine::report::Fnv1a;
 use foveal_engine::{
-    BudgetSpec, Fixation, FrozenClock, SchedulerKind, SimConfig, Simulation, Truth,
+    BudgetSpec, Fixation, FrozenClock, SchedulerKind, SimConfig, Simulation, TreeKind, Truth,
 };
 
 /// A fixed gaze path: fixations that jump every 20 frames, with one unusable sample and one gap.
@@ -27,6 +27,8 @@ fn run(frames: u64, kind: SchedulerKind) -> u64 {
 fn run_on(frames: u64, kind: SchedulerKind, truth: Truth) -> u64 {
     let mut cfg = SimConfig::default();
     cfg.scene.truth = truth;
+    // The paper's octree: the hashes pin its traversal.
+    cfg.scene.tree = TreeKind::Octree;
     cfg.scene.bodies = 300;
     cfg.scene.seed = 2024;
     cfg.scheduler = kind;

@@ -7,7 +7,8 @@ use foveal_engine::metrics::Fovea;
 use foveal_engine::narrow_phase::{PairStatus, brute_force_colliding};
 use foveal_engine::report::FOVEAL_DEG;
 use foveal_engine::{
-    BudgetSpec, DeemedTruth, Fixation, FrozenClock, SchedulerKind, SimConfig, Simulation,
+    BudgetSpec, DeemedTruth, Fixation, FrozenClock, SchedulerKind, SimConfig, Simulation, TreeKind,
+    Truth,
 };
 
 fn config(n: u32, depth: u32, budget: BudgetSpec, kind: SchedulerKind) -> SimConfig {
@@ -47,6 +48,58 @@ fn exact_frames_equal_brute_force_at_every_depth() {
                 want,
                 "depth {depth}: pair {:?}",
                 (p.a, p.b)
+            );
+        }
+    }
+}
+
+/// The tree kinds share their leaves, so an exact frame is the same under each, pair by pair and
+/// in every body's pose after the responses, under both truths; the fitted ones take fewer
+/// sphere tests.
+#[test]
+fn every_tree_gives_the_octrees_exact_frames_in_fewer_tests() {
+    for truth in Truth::ALL {
+        let run = |tree: TreeKind| {
+            let mut cfg = config(400, 4, BudgetSpec::Exact, SchedulerKind::RoundRobin);
+            cfg.scene.truth = truth;
+            cfg.scene.tree = tree;
+            cfg.audit = false;
+            let mut sim = Simulation::new(cfg).expect("valid");
+            let mut tests = 0;
+            let mut statuses = Vec::new();
+            for _ in 0..30 {
+                tests += sim.step(None, &FrozenClock).sphere_tests;
+                statuses.extend(sim.pairs().iter().map(|p| (p.a, p.b, p.status)));
+            }
+            let w = sim.world();
+            let poses: Vec<_> = w
+                .position
+                .iter()
+                .zip(&w.orientation)
+                .map(|(p, q)| {
+                    (
+                        p.to_array().map(f64::to_bits),
+                        q.to_array().map(f64::to_bits),
+                    )
+                })
+                .collect();
+            (statuses, poses, tests)
+        };
+        let (octree, octree_poses, octree_tests) = run(TreeKind::Octree);
+        for tree in [TreeKind::Fitted, TreeKind::Parts] {
+            let (statuses, poses, tests) = run(tree);
+            assert!(
+                statuses == octree,
+                "{truth} {tree}: a pair's answer differs"
+            );
+            assert!(
+                poses == octree_poses,
+                "{truth} {tree}: the bodies moved differently"
+            );
+            eprintln!("{truth} {tree}: {tests} sphere tests against the octree's {octree_tests}");
+            assert!(
+                tests < octree_tests,
+                "{truth} {tree}: {tests} tests, octree {octree_tests}"
             );
         }
     }
@@ -178,9 +231,11 @@ fn export_has_tree_bodies_and_exact_pairs() {
     sim.step(None, &FrozenClock);
     let v: serde_json::Value = serde_json::from_str(&sim.export_json()).expect("valid JSON");
     assert_eq!(v["format"], "foveal.scene.v1");
-    assert_eq!(v["spheres_per_level"], serde_json::json!([1, 8, 32, 80]));
-    assert_eq!(v["sphere_tree"].as_array().map(Vec::len), Some(121));
-    assert_eq!(v["sphere_tree"][0]["child_count"], 8);
+    // The default tree: the root, the star's core and six spikes, their groups of four leaves
+    // (two in the core, three along each spike), the 80 leaves.
+    assert_eq!(v["spheres_per_level"], serde_json::json!([1, 7, 20, 80]));
+    assert_eq!(v["sphere_tree"].as_array().map(Vec::len), Some(108));
+    assert_eq!(v["sphere_tree"][0]["child_count"], 7);
     assert_eq!(v["bodies"].as_array().map(Vec::len), Some(120));
     assert_eq!(
         v["bodies"][0]["orientation"].as_array().map(Vec::len),

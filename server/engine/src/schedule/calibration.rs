@@ -24,7 +24,7 @@
 
 use serde::Serialize;
 
-use crate::config::Truth;
+use crate::config::{TreeKind, Truth};
 use crate::narrow_phase::NarrowPhase;
 
 /// Centre-distance buckets (over the root diameter) per state.
@@ -244,13 +244,30 @@ impl Calibration {
         Self::shipped_for(Truth::Shape)
     }
 
-    /// The table shipped for `truth`: the outcomes a state predicts differ between the truths
-    /// (under the shape truth most pairs whose leaves overlap are apart, and a contact rarely
-    /// lasts a frame), so each truth has its own, calibrated on the same scenes.
+    /// The table shipped for `truth` and the default tree: the outcomes a state predicts differ
+    /// between the truths (under the shape truth most pairs whose leaves overlap are apart, and a
+    /// contact rarely lasts a frame), so each truth has its own, calibrated on the same scenes.
     pub fn shipped_for(truth: Truth) -> Option<Self> {
-        let bytes: &[u8] = match truth {
-            Truth::LeafSpheres => include_bytes!("../../data/calibration-leaf-spheres.bin"),
-            Truth::Shape => include_bytes!("../../data/calibration-shape.bin"),
+        Self::shipped_for_tree(truth, TreeKind::default())
+    }
+
+    /// The table shipped for `truth` and `tree`: what a state predicts (its odds, its cost)
+    /// depends on the spheres it tests, so the default tree and the paper's octree each have
+    /// their own (`server/engine/data/calibration-<truth>[-octree].bin`); the fitted octree has
+    /// none and is calibrated when a scene is built.
+    pub fn shipped_for_tree(truth: Truth, tree: TreeKind) -> Option<Self> {
+        let bytes: &[u8] = match (truth, tree) {
+            (Truth::LeafSpheres, TreeKind::Parts) => {
+                include_bytes!("../../data/calibration-leaf-spheres.bin")
+            }
+            (Truth::Shape, TreeKind::Parts) => include_bytes!("../../data/calibration-shape.bin"),
+            (Truth::LeafSpheres, TreeKind::Octree) => {
+                include_bytes!("../../data/calibration-leaf-spheres-octree.bin")
+            }
+            (Truth::Shape, TreeKind::Octree) => {
+                include_bytes!("../../data/calibration-shape-octree.bin")
+            }
+            (_, TreeKind::Fitted) => return None,
         };
         Self::from_bytes(bytes).ok()
     }

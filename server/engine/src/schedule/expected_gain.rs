@@ -44,7 +44,8 @@ pub struct ExpectedGain {
     fallback: Vec<u32>,
 }
 
-/// Average branching factor of the star's tree (8, 32/8, 80/32 per level), used to price a step.
+/// Average branching factor of the star's tree (8, 32/8, 80/32 per level in the octree; 7, 20/7, 4 in
+/// the parts tree: 80 leaves over three levels either way), used to price a step.
 const BRANCHING: f32 = 4.0;
 
 fn price(np: &NarrowPhase, i: usize) -> f32 {
