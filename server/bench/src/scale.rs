@@ -22,8 +22,8 @@ use std::time::Instant;
 
 use foveal_engine::broad_phase::BroadPhaseKind;
 use foveal_engine::{
-    BudgetSpec, ConfigError, Fixation, PhaseProfile, SceneConfig, SchedulerKind, SimConfig,
-    Simulation, TreeKind, Truth,
+    BudgetSpec, ConfigError, Fixation, PassCosts, PhaseProfile, SceneConfig, SchedulerKind,
+    SimConfig, Simulation, TreeKind, Truth,
 };
 use serde::{Deserialize, Serialize};
 
@@ -267,6 +267,9 @@ pub struct FrameSample {
     /// The frame took the exact pass on its budget's word (`FrameReport::exact_fit`).
     #[serde(default)]
     pub exact_fit: bool,
+    /// The narrow phase pass by pass (`FrameReport::passes`).
+    #[serde(default)]
+    pub passes: PassCosts,
 }
 
 /// The whole command.
@@ -642,6 +645,7 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
             guard_ns: r.guard_ns,
             foveal_exact,
             exact_fit: r.exact_fit,
+            passes: r.passes,
         });
         phases_ms.push(ph.iter().map(|(_, ns)| *ns as f64).sum::<f64>() * 1e-6);
         if phase_totals.is_empty() {
@@ -1267,17 +1271,25 @@ pub fn csv(results: &[RunResult]) -> String {
     s
 }
 
+/// The narrow phase's passes in `frames.csv`'s columns (`FrameReport::passes`).
+const PASSES: [&str; 5] = ["reset", "roots", "fovea", "ordering", "rest"];
+
 /// One CSV row per measured frame of every run: the run's configuration and round, the frame's
 /// place in the run (0-based, after the warm-up), its whole step and each profiled phase (ms),
-/// deemed pairs, stale regions, sphere tests, the guard band it aimed early by (ms), and whether
-/// every pair within 5 degrees of the fixation was settled exactly.
+/// deemed pairs, stale regions, sphere tests, the guard band it aimed early by (ms), whether
+/// every pair within 5 degrees of the fixation was settled exactly, and each narrow-phase pass's
+/// time (ms) and sphere tests.
 pub fn frames_csv(results: &[RunResult]) -> String {
     let names = phase_names(results);
     let mut s = String::from("n,mode,budget_ms,threads,broad_phase,baseline,round,frame,step_ms");
     for k in &names {
         let _ = write!(s, ",{k}_ms");
     }
-    s.push_str(",deemed,stale_regions,sphere_tests,guard_ms,foveal_exact,exact_fit\n");
+    s.push_str(",deemed,stale_regions,sphere_tests,guard_ms,foveal_exact,exact_fit");
+    for pass in PASSES {
+        let _ = write!(s, ",{pass}_ms,{pass}_tests");
+    }
+    s.push('\n');
     for r in results {
         // Where each named phase sits in this run's frames.
         let at: Vec<Option<usize>> = names
@@ -1308,7 +1320,7 @@ pub fn frames_csv(results: &[RunResult]) -> String {
                     ns.map_or(String::new(), |ns| (*ns as f64 * 1e-6).to_string())
                 );
             }
-            let _ = writeln!(
+            let _ = write!(
                 s,
                 ",{},{},{},{},{},{}",
                 f.deemed,
@@ -1318,6 +1330,11 @@ pub fn frames_csv(results: &[RunResult]) -> String {
                 f.foveal_exact,
                 f.exact_fit
             );
+            let p = &f.passes;
+            for pass in [p.reset, p.roots, p.fovea, p.ordering, p.rest] {
+                let _ = write!(s, ",{},{}", pass.ns as f64 * 1e-6, pass.tests);
+            }
+            s.push('\n');
         }
     }
     s
@@ -1483,6 +1500,16 @@ mod tests {
             assert!((guard_ms - f.guard_ns as f64 * 1e-6).abs() < 1e-12);
             assert_eq!(cells[col("foveal_exact")], f.foveal_exact.to_string());
             assert_eq!(cells[col("exact_fit")], f.exact_fit.to_string());
+            // The passes' tests add up to the frame's.
+            let tests: u64 = PASSES
+                .iter()
+                .map(|p| {
+                    cells[col(&format!("{p}_tests"))]
+                        .parse::<u64>()
+                        .expect("a count")
+                })
+                .sum();
+            assert_eq!(tests, f.sphere_tests, "{line}");
         }
         // Budgeted runs above 30,000 bodies measure more frames than exact ones, so that their
         // p99 is not one or two stalled frames.

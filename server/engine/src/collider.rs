@@ -15,7 +15,7 @@ use crate::fixation::{Fixation, FrameView};
 use crate::metrics::{self, Fovea};
 use crate::narrow_phase::{NarrowPhase, PairState, PairStatus, separation, shape_separation};
 use crate::perception::Viewer;
-use crate::report::{AuditReport, DeemedTruth, FOVEAL_DEG, FrameReport, PhaseProfile};
+use crate::report::{AuditReport, DeemedTruth, FOVEAL_DEG, FrameReport, PassCost, PhaseProfile};
 use crate::schedule::calibration::Calibration;
 use crate::schedule::{self, Passes, Priorities, Prioritiser, Scheduler, Work};
 use crate::sphere_tree::SphereTree;
@@ -127,6 +127,14 @@ pub struct Collider {
     /// fixation (in pixels) whose fovea they counted: the metrics use them instead of counting
     /// every pair again (see [`Self::exact_pass`]).
     counted: Option<(Option<[f64; 2]>, metrics::Counts)>,
+}
+
+/// The cost of a pass that started at `start` (clock, sphere tests) and ended at `end`.
+fn pass_cost(start: (u64, u64), end: (u64, u64)) -> PassCost {
+    PassCost {
+        ns: end.0.saturating_sub(start.0),
+        tests: end.1.saturating_sub(start.1),
+    }
 }
 
 /// Settle every root-separated pair of the frame in one pass, as far as `meter` allows (see
@@ -348,6 +356,7 @@ impl Collider {
         self.counted = None;
         if budget == FrameBudget::Unlimited {
             self.exact_pass(input, frame, r, profile, t0, None);
+            r.passes.rest = pass_cost((t0, 0), (clock.now_ns(), r.sphere_tests));
             return;
         }
         // A wall-clock frame whose budget is expected to cover the exact pass takes it: no
@@ -364,6 +373,7 @@ impl Collider {
             && let Some(mut meter) = asked
         {
             let all = self.exact_pass(input, frame, r, profile, t0, Some(&mut meter));
+            r.passes.rest = pass_cost((t0, 0), (clock.now_ns(), r.sphere_tests));
             let spent = clock.now_ns().saturating_sub(t0);
             let reached = if all { n } else { n - r.deemed as usize };
             self.exact_gate.learn(spent, reached.max(1));
@@ -372,6 +382,9 @@ impl Collider {
         }
         self.narrow.reset(input.candidates);
         self.narrow.make_room_for_frames();
+        let mark = |c: &Self| (clock.now_ns(), c.narrow.tests);
+        let mut at = mark(self);
+        r.passes.reset = pass_cost((t0, 0), at);
         let fixation_px = fixation.map(|f| {
             let f = f.clamped();
             input.viewer.to_pixels(f.x, f.y)
@@ -399,6 +412,9 @@ impl Collider {
             fixation_px,
         ) {
             self.fovea_pass(input, &mut run, prefix, px, whole_fovea);
+            let now = mark(self);
+            r.passes.fovea = pass_cost(at, now);
+            at = now;
             // At large N round-robin spends the rest (the regions are the gaze order; its first
             // round tests every pair's roots, the cheapest error removed, and settled more pairs a
             // millisecond than whole pairs in region order at 100,000 bodies: 0.68x the exact
@@ -414,6 +430,7 @@ impl Collider {
                     self.config.threads as usize,
                 );
                 self.fallback.run(&mut self.narrow, &work, &mut run.meter);
+                r.passes.rest = pass_cost(at, mark(self));
                 self.scheduler.forget();
                 let deemed = self.narrow.close_frame(input.world.len());
                 profile.prioritise_ns = 0;
@@ -425,6 +442,9 @@ impl Collider {
         let roots_first = run.meter.counts_time() && passes.roots_first;
         if roots_first {
             self.root_pass(input, &mut run);
+            let now = mark(self);
+            r.passes.roots = pass_cost(at, now);
+            at = now;
         }
         // The gaze rings (see `schedule::rings`), for schedulers that use gaze (not the priced
         // scheduler's gaze-blind ablation), where the broad phase has columns to find the pairs
@@ -443,6 +463,9 @@ impl Collider {
         {
             rings.asked = true;
             self.rings_fovea_pass(input, &mut run, columns, px, &mut rings, r);
+            let now = mark(self);
+            r.passes.fovea = pass_cost(at, now);
+            at = now;
         }
         // Under a wall-clock budget too small to pay for ordering the pairs, ordering them would
         // leave less time for the tests than it is worth: shed it, run round-robin, and say so.
@@ -465,11 +488,14 @@ impl Collider {
             self.priorities.clear();
         }
         let t1 = clock.now_ns();
+        r.passes.ordering = pass_cost(at, (t1, self.narrow.tests));
+        let rest_from = (t1, self.narrow.tests);
         if affordable {
             self.ordered_run(input, &mut run, prioritised, t1);
         } else {
             self.shed_run(input, &mut run, roots_first, rings_at, rings, r);
         }
+        r.passes.rest = pass_cost(rest_from, mark(self));
         let deemed = self.narrow.close_frame(input.world.len());
         let t2 = clock.now_ns();
         // Every pair settled inside the budget: the exact pass would have fitted (it costs
@@ -1052,6 +1078,48 @@ mod tests {
         assert!(settled > 0 && r.deemed as usize + settled == col.pairs().len());
         let next = col.evaluate(&input, fixation, FrameBudget::Wall(20_000), &clock);
         assert!(!next.exact_fit && col.pairs().iter().all(|p| !p.status.is_open()));
+    }
+
+    /// Every pass's tests sum to the frame's, whatever the budget: a wall-clock frame's root
+    /// pass, fovea and rest, an exact frame's one pass, a sphere-test frame's run; the fixed
+    /// passes (reset, ordering) test nothing and, on a clock that ticks at every read, take time.
+    #[test]
+    fn the_passes_account_for_every_sphere_test() {
+        let (cfg, sim) = stepped_scene(2_000, 5);
+        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 50);
+        let fixation = Some(Fixation::at(0.5, 0.5));
+        let mut col = Collider::new(&cfg, sim.tree(), sim.viewer()).expect("valid");
+        let mut roots_seen = false;
+        for budget in [
+            FrameBudget::Wall(400_000),
+            FrameBudget::Wall(40_000),
+            FrameBudget::Tests(2_000),
+            FrameBudget::Unlimited,
+        ] {
+            for _ in 0..LEARN_FRAMES + 2 {
+                let r = col.evaluate(&sim.frame_input(), fixation, budget, &clock);
+                let p = r.passes;
+                let sum =
+                    p.reset.tests + p.roots.tests + p.fovea.tests + p.ordering.tests + p.rest.tests;
+                assert_eq!(sum, r.sphere_tests, "{budget:?}: {p:?}");
+                assert_eq!((p.reset.tests, p.ordering.tests), (0, 0));
+                match budget {
+                    FrameBudget::Wall(_) if !r.exact_fit => {
+                        assert!(p.reset.ns > 0);
+                        roots_seen |= p.roots.tests > 0;
+                    }
+                    FrameBudget::Tests(_) => {
+                        assert_eq!(p.rest.tests, r.sphere_tests);
+                        assert_eq!(
+                            (p.roots, p.fovea),
+                            (PassCost::default(), PassCost::default())
+                        );
+                    }
+                    _ => assert_eq!(p.rest.tests, r.sphere_tests),
+                }
+            }
+        }
+        assert!(roots_seen, "no wall-clock frame counted a root pass");
     }
 
     /// On a clock that advances 1 µs at every read the ordering, a handful of reads, costs far

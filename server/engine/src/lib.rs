@@ -92,5 +92,5 @@ pub use fixation::Fixation;
 pub use perception::{
     CameraConfig, Display, EccentricityUnit, PerceptualFunction, PerceptualModel, Viewer,
 };
-pub use report::{AuditReport, DeemedTruth, FrameReport, PhaseProfile};
+pub use report::{AuditReport, DeemedTruth, FrameReport, PassCost, PassCosts, PhaseProfile};
 pub use simulation::{MAX_POOL_WARM_NS, Simulation};

@@ -164,8 +164,51 @@ pub struct FrameReport {
     pub guard_ns: u64,
     /// Per-phase timings.
     pub profile: PhaseProfile,
+    /// The narrow phase's passes under a budget: what each cost in time and sphere tests.
+    pub passes: PassCosts,
     /// Exact answer for the deemed pairs, when auditing.
     pub audit: Option<AuditReport>,
+}
+
+/// What one pass of a frame's narrow phase cost: its wall time (ns, by the frame's clock: 0
+/// under a frozen one) and its sphere tests.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct PassCost {
+    /// Wall time, ns.
+    pub ns: u64,
+    /// Sphere tests.
+    pub tests: u64,
+}
+
+impl PassCost {
+    /// ns per sphere test (None for a pass without tests: a fixed cost).
+    pub fn ns_per_test(&self) -> Option<f64> {
+        (self.tests > 0).then(|| self.ns as f64 / self.tests as f64)
+    }
+}
+
+/// A frame's narrow phase pass by pass (docs/DESIGN.md "Narrow phase"): the fixed costs (reset,
+/// ordering) beside the passes that test, so that what a budget buys can be read per pass.
+/// Their tests sum to [`FrameReport::sphere_tests`]; their times to the narrow phase and
+/// prioritisation, to within the clock reads between them. An exact frame's single pass is in
+/// `rest`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct PassCosts {
+    /// Resetting the pair states for the frame (no test).
+    pub reset: PassCost,
+    /// The root pass: every pair apart at the root settled in one go (wall-clock frames).
+    pub roots: PassCost,
+    /// The fovea: the pairs within [`FOVEAL_DEG`] of the fixation settled whole, nearest first
+    /// (the gaze rings, the regions of a shed broad phase, or `fovea_first`).
+    pub fovea: PassCost,
+    /// Ordering: prioritising the pairs for the scheduler (no test).
+    pub ordering: PassCost,
+    /// The rest: the scheduler's run until every pair was settled or the budget ran out. Where
+    /// the ordering was shed, the fallback's run, with the root pass and the gaze rings it did
+    /// itself.
+    pub rest: PassCost,
 }
 
 impl FrameReport {
