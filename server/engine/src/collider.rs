@@ -80,6 +80,8 @@ struct Run<'c> {
     uncertainty_deg: f64,
     /// Time the sphere-test passes before the ordering took (ns): narrow-phase time.
     pass_ns: u64,
+    /// The last clock reading a pass made (ns): where the next pass's time starts.
+    last_ns: u64,
 }
 
 /// Whether this frame asked for the gaze rings' fovea pass, and whether it placed them.
@@ -356,7 +358,11 @@ impl Collider {
         self.counted = None;
         if budget == FrameBudget::Unlimited {
             self.exact_pass(input, frame, r, profile, t0, None);
-            r.passes.rest = pass_cost((t0, 0), (clock.now_ns(), r.sphere_tests));
+            // (Its time from the profile: no clock read of its own.)
+            r.passes.rest = PassCost {
+                ns: profile.narrow_ns,
+                tests: r.sphere_tests,
+            };
             return;
         }
         // A wall-clock frame whose budget is expected to cover the exact pass takes it: no
@@ -373,8 +379,11 @@ impl Collider {
             && let Some(mut meter) = asked
         {
             let all = self.exact_pass(input, frame, r, profile, t0, Some(&mut meter));
-            r.passes.rest = pass_cost((t0, 0), (clock.now_ns(), r.sphere_tests));
             let spent = clock.now_ns().saturating_sub(t0);
+            r.passes.rest = PassCost {
+                ns: spent,
+                tests: r.sphere_tests,
+            };
             let reached = if all { n } else { n - r.deemed as usize };
             self.exact_gate.learn(spent, reached.max(1));
             r.exact_fit = all;
@@ -382,9 +391,6 @@ impl Collider {
         }
         self.narrow.reset(input.candidates);
         self.narrow.make_room_for_frames();
-        let mark = |c: &Self| (clock.now_ns(), c.narrow.tests);
-        let mut at = mark(self);
-        r.passes.reset = pass_cost((t0, 0), at);
         let fixation_px = fixation.map(|f| {
             let f = f.clamped();
             input.viewer.to_pixels(f.x, f.y)
@@ -402,7 +408,12 @@ impl Collider {
             fixation_px,
             uncertainty_deg: fixation.map_or(0.0, |f| f.clamped().uncertainty_deg),
             pass_ns: 0,
+            last_ns: t_meter,
         };
+        // The passes are timed by the clock reads they make anyway (a clock read is not free,
+        // and tests count them): each pass leaves its last reading in `run.last_ns`.
+        let mut at = (t_meter, 0);
+        r.passes.reset = pass_cost((t0, 0), at);
         let passes = self.passes;
         // With `fovea_first`, frames without regions settle the fovea first too, over every
         // candidate (see `SimConfig::fovea_first`); then the ordering below spends the rest.
@@ -412,7 +423,7 @@ impl Collider {
             fixation_px,
         ) {
             self.fovea_pass(input, &mut run, prefix, px, whole_fovea);
-            let now = mark(self);
+            let now = (run.last_ns, self.narrow.tests);
             r.passes.fovea = pass_cost(at, now);
             at = now;
             // At large N round-robin spends the rest (the regions are the gaze order; its first
@@ -430,11 +441,13 @@ impl Collider {
                     self.config.threads as usize,
                 );
                 self.fallback.run(&mut self.narrow, &work, &mut run.meter);
-                r.passes.rest = pass_cost(at, mark(self));
+                let tests = self.narrow.tests;
                 self.scheduler.forget();
                 let deemed = self.narrow.close_frame(input.world.len());
+                let end = clock.now_ns();
+                r.passes.rest = pass_cost(at, (end, tests));
                 profile.prioritise_ns = 0;
-                profile.narrow_ns = clock.now_ns() - t0;
+                profile.narrow_ns = end - t0;
                 self.report_counts(&run, deemed, r);
                 return;
             }
@@ -442,7 +455,7 @@ impl Collider {
         let roots_first = run.meter.counts_time() && passes.roots_first;
         if roots_first {
             self.root_pass(input, &mut run);
-            let now = mark(self);
+            let now = (run.last_ns, self.narrow.tests);
             r.passes.roots = pass_cost(at, now);
             at = now;
         }
@@ -463,7 +476,7 @@ impl Collider {
         {
             rings.asked = true;
             self.rings_fovea_pass(input, &mut run, columns, px, &mut rings, r);
-            let now = mark(self);
+            let now = (run.last_ns, self.narrow.tests);
             r.passes.fovea = pass_cost(at, now);
             at = now;
         }
@@ -495,9 +508,10 @@ impl Collider {
         } else {
             self.shed_run(input, &mut run, roots_first, rings_at, rings, r);
         }
-        r.passes.rest = pass_cost(rest_from, mark(self));
+        let tests = self.narrow.tests;
         let deemed = self.narrow.close_frame(input.world.len());
         let t2 = clock.now_ns();
+        r.passes.rest = pass_cost(rest_from, (t2, tests));
         // Every pair settled inside the budget: the exact pass would have fitted (it costs
         // less than this frame's order and descents did).
         if deemed == 0 && run.meter.counts_time() && !run.meter.was_exhausted() {
@@ -560,7 +574,8 @@ impl Collider {
                 go
             },
         );
-        run.pass_ns = run.clock.now_ns().saturating_sub(pass_start);
+        run.last_ns = run.clock.now_ns();
+        run.pass_ns = run.last_ns.saturating_sub(pass_start);
         self.foveal_pass = Some((settled, run.pass_ns));
         // Not cut: every selected pair was settled. The metrics count the pairs of the same
         // prefix within FOVEAL_DEG of the same point, the same test when the radius is not
@@ -574,7 +589,8 @@ impl Collider {
     fn root_pass(&mut self, input: &FrameInput<'_>, run: &mut Run<'_>) {
         let roots_start = run.clock.now_ns();
         settle_roots(&mut self.narrow, input, &mut run.meter);
-        run.pass_ns += run.clock.now_ns().saturating_sub(roots_start);
+        run.last_ns = run.clock.now_ns();
+        run.pass_ns += run.last_ns.saturating_sub(roots_start);
     }
 
     /// Pass: the pairs within the fovea, whole and nearest the fixation first, where the gaze
@@ -615,7 +631,8 @@ impl Collider {
             self.rings_cost.learn(self.rings.setup_ns() as f64);
         }
         r.gaze_rings = rings.placed;
-        run.pass_ns += run.clock.now_ns().saturating_sub(fovea_start);
+        run.last_ns = run.clock.now_ns();
+        run.pass_ns += run.last_ns.saturating_sub(fovea_start);
     }
 
     /// Run: the scheduler in its own order (prioritised when it asked, with the frame's view),

@@ -191,8 +191,8 @@ impl PassCost {
 /// A frame's narrow phase pass by pass (docs/DESIGN.md "Narrow phase"): the fixed costs (reset,
 /// ordering) beside the passes that test, so that what a budget buys can be read per pass.
 /// Their tests sum to [`FrameReport::sphere_tests`]; their times to the narrow phase and
-/// prioritisation, to within the clock reads between them. An exact frame's single pass is in
-/// `rest`.
+/// prioritisation. Each pass is timed by the clock reads the frame makes anyway (a read is not
+/// free, and a wall-clock budget pays for it). An exact frame's single pass is in `rest`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct PassCosts {
@@ -205,9 +205,9 @@ pub struct PassCosts {
     pub fovea: PassCost,
     /// Ordering: prioritising the pairs for the scheduler (no test).
     pub ordering: PassCost,
-    /// The rest: the scheduler's run until every pair was settled or the budget ran out. Where
-    /// the ordering was shed, the fallback's run, with the root pass and the gaze rings it did
-    /// itself.
+    /// The rest: the scheduler's run until every pair was settled or the budget ran out, and
+    /// closing the frame (deeming what is left). Where the ordering was shed, the fallback's
+    /// run, with the root pass and the gaze rings it did itself.
     pub rest: PassCost,
 }
 
