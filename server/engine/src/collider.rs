@@ -80,8 +80,6 @@ struct Run<'c> {
     uncertainty_deg: f64,
     /// Time the sphere-test passes before the ordering took (ns): narrow-phase time.
     pass_ns: u64,
-    /// The last clock reading a pass made (ns): where the next pass's time starts.
-    last_ns: u64,
 }
 
 /// Whether this frame asked for the gaze rings' fovea pass, and whether it placed them.
@@ -129,6 +127,29 @@ pub struct Collider {
     /// fixation (in pixels) whose fovea they counted: the metrics use them instead of counting
     /// every pair again (see [`Self::exact_pass`]).
     counted: Option<(Option<[f64; 2]>, metrics::Counts)>,
+}
+
+/// The narrow phase's passes as they ran, timed by the clock reads they made: the first pass's
+/// first reading (where the reset ended), the last pass's last one (where the ordering starts),
+/// and the sphere tests counted when the last pass ended.
+#[derive(Debug, Default)]
+struct PassClock {
+    first_start: Option<u64>,
+    last_end: Option<u64>,
+    tests: u64,
+}
+
+impl PassClock {
+    /// A pass that ran from `times.0` to `times.1` (None: it did not run) with `tests_now`
+    /// sphere tests counted at its end, into `slot`.
+    fn record(&mut self, slot: &mut PassCost, times: Option<(u64, u64)>, tests_now: u64) {
+        if let Some((start, end)) = times {
+            self.first_start.get_or_insert(start);
+            *slot = pass_cost((start, self.tests), (end, tests_now));
+            self.last_end = Some(end);
+        }
+        self.tests = tests_now;
+    }
 }
 
 /// The cost of a pass that started at `start` (clock, sphere tests) and ended at `end`.
@@ -408,12 +429,11 @@ impl Collider {
             fixation_px,
             uncertainty_deg: fixation.map_or(0.0, |f| f.clamped().uncertainty_deg),
             pass_ns: 0,
-            last_ns: t_meter,
         };
         // The passes are timed by the clock reads they make anyway (a clock read is not free,
-        // and tests count them): each pass leaves its last reading in `run.last_ns`.
-        let mut at = (t_meter, 0);
-        r.passes.reset = pass_cost((t0, 0), at);
+        // and a wall-clock budget pays for it): each returns its first and last reading. The
+        // reset runs to the first pass (or the ordering), the ordering from the last pass.
+        let mut timed = PassClock::default();
         let passes = self.passes;
         // With `fovea_first`, frames without regions settle the fovea first too, over every
         // candidate (see `SimConfig::fovea_first`); then the ordering below spends the rest.
@@ -422,10 +442,8 @@ impl Collider {
             frame.foveal_prefix.or(whole_fovea.then_some(run.n)),
             fixation_px,
         ) {
-            self.fovea_pass(input, &mut run, prefix, px, whole_fovea);
-            let now = (run.last_ns, self.narrow.tests);
-            r.passes.fovea = pass_cost(at, now);
-            at = now;
+            let times = self.fovea_pass(input, &mut run, prefix, px, whole_fovea);
+            timed.record(&mut r.passes.fovea, Some(times), self.narrow.tests);
             // At large N round-robin spends the rest (the regions are the gaze order; its first
             // round tests every pair's roots, the cheapest error removed, and settled more pairs a
             // millisecond than whole pairs in region order at 100,000 bodies: 0.68x the exact
@@ -445,7 +463,9 @@ impl Collider {
                 self.scheduler.forget();
                 let deemed = self.narrow.close_frame(input.world.len());
                 let end = clock.now_ns();
-                r.passes.rest = pass_cost(at, (end, tests));
+                let from = timed.last_end.unwrap_or(t_meter);
+                r.passes.reset = pass_cost((t0, 0), (timed.first_start.unwrap_or(from), 0));
+                timed.record(&mut r.passes.rest, Some((from, end)), tests);
                 profile.prioritise_ns = 0;
                 profile.narrow_ns = end - t0;
                 self.report_counts(&run, deemed, r);
@@ -454,10 +474,8 @@ impl Collider {
         }
         let roots_first = run.meter.counts_time() && passes.roots_first;
         if roots_first {
-            self.root_pass(input, &mut run);
-            let now = (run.last_ns, self.narrow.tests);
-            r.passes.roots = pass_cost(at, now);
-            at = now;
+            let times = self.root_pass(input, &mut run);
+            timed.record(&mut r.passes.roots, Some(times), self.narrow.tests);
         }
         // The gaze rings (see `schedule::rings`), for schedulers that use gaze (not the priced
         // scheduler's gaze-blind ablation), where the broad phase has columns to find the pairs
@@ -475,10 +493,8 @@ impl Collider {
             rings_at.filter(|_| roots_first && !whole_fovea && passes.rings_fovea)
         {
             rings.asked = true;
-            self.rings_fovea_pass(input, &mut run, columns, px, &mut rings, r);
-            let now = (run.last_ns, self.narrow.tests);
-            r.passes.fovea = pass_cost(at, now);
-            at = now;
+            let times = self.rings_fovea_pass(input, &mut run, columns, px, &mut rings, r);
+            timed.record(&mut r.passes.fovea, times, self.narrow.tests);
         }
         // Under a wall-clock budget too small to pay for ordering the pairs, ordering them would
         // leave less time for the tests than it is worth: shed it, run round-robin, and say so.
@@ -501,7 +517,9 @@ impl Collider {
             self.priorities.clear();
         }
         let t1 = clock.now_ns();
-        r.passes.ordering = pass_cost(at, (t1, self.narrow.tests));
+        let reset_end = timed.first_start.unwrap_or(t1);
+        r.passes.reset = pass_cost((t0, 0), (reset_end, 0));
+        r.passes.ordering = pass_cost((timed.last_end.unwrap_or(reset_end), 0), (t1, 0));
         let rest_from = (t1, self.narrow.tests);
         if affordable {
             self.ordered_run(input, &mut run, prioritised, t1);
@@ -542,7 +560,7 @@ impl Collider {
         prefix: usize,
         px: [f64; 2],
         whole_fovea: bool,
-    ) {
+    ) -> (u64, u64) {
         let radius = FOVEAL_DEG + run.uncertainty_deg;
         let fovea = Fovea::new(input.viewer, px, radius.min(89.0));
         let pos = &input.world.position;
@@ -574,23 +592,25 @@ impl Collider {
                 go
             },
         );
-        run.last_ns = run.clock.now_ns();
-        run.pass_ns = run.last_ns.saturating_sub(pass_start);
+        let end = run.clock.now_ns();
+        run.pass_ns = end.saturating_sub(pass_start);
         self.foveal_pass = Some((settled, run.pass_ns));
         // Not cut: every selected pair was settled. The metrics count the pairs of the same
         // prefix within FOVEAL_DEG of the same point, the same test when the radius is not
         // widened by uncertainty.
         self.foveal_known = (!cut && radius == FOVEAL_DEG).then_some(settled);
         self.foveal_marked = radius == FOVEAL_DEG;
+        (pass_start, end)
     }
 
     /// Pass: settle every root-separated pair of the frame in one go, as far as the meter
     /// allows (see `NarrowPhase::settle_separate_roots`).
-    fn root_pass(&mut self, input: &FrameInput<'_>, run: &mut Run<'_>) {
+    fn root_pass(&mut self, input: &FrameInput<'_>, run: &mut Run<'_>) -> (u64, u64) {
         let roots_start = run.clock.now_ns();
         settle_roots(&mut self.narrow, input, &mut run.meter);
-        run.last_ns = run.clock.now_ns();
-        run.pass_ns += run.last_ns.saturating_sub(roots_start);
+        let end = run.clock.now_ns();
+        run.pass_ns += end.saturating_sub(roots_start);
+        (roots_start, end)
     }
 
     /// Pass: the pairs within the fovea, whole and nearest the fixation first, where the gaze
@@ -603,9 +623,9 @@ impl Collider {
         px: [f64; 2],
         rings: &mut RingsState,
         r: &mut FrameReport,
-    ) {
+    ) -> Option<(u64, u64)> {
         if !self.rings_cost.admits(1.0, RINGS_SHARE, &run.meter) {
-            return;
+            return None;
         }
         let fovea_start = run.clock.now_ns();
         let work = Work::blind(
@@ -631,8 +651,9 @@ impl Collider {
             self.rings_cost.learn(self.rings.setup_ns() as f64);
         }
         r.gaze_rings = rings.placed;
-        run.last_ns = run.clock.now_ns();
-        run.pass_ns += run.last_ns.saturating_sub(fovea_start);
+        let end = run.clock.now_ns();
+        run.pass_ns += end.saturating_sub(fovea_start);
+        Some((fovea_start, end))
     }
 
     /// Run: the scheduler in its own order (prioritised when it asked, with the frame's view),
