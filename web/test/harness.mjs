@@ -7,6 +7,7 @@ import { spawn } from "node:child_process";
 import { request as httpsRequest } from "node:https";
 import { existsSync, mkdirSync, mkdtempSync, rmSync } from "node:fs";
 import { createServer } from "node:net";
+import { after, before } from "node:test";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -137,6 +138,27 @@ export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 export function recordErrors(page, errors) {
   page.on("console", (m) => m.type() === "error" && errors.push(m.text()));
   page.on("pageerror", (e) => errors.push(String(e)));
+}
+
+/**
+ * A describe block's server and page: its `before` starts foveal-server with `args` and opens
+ * the viewer in a fresh browser (the page's console errors pushed onto `errors`), its `after`
+ * closes both. Call inside `describe`; the fields are filled in when `before` has run.
+ */
+export function servedPage(args) {
+  const ctx = { server: null, browser: null, page: null, errors: [] };
+  before(async () => {
+    ctx.server = await startServer(await freePort(), args);
+    ctx.browser = await launch();
+    ctx.page = await ctx.browser.browser.newPage();
+    recordErrors(ctx.page, ctx.errors);
+    await ctx.page.goto(ctx.server.url);
+  });
+  after(async () => {
+    await ctx.browser?.close();
+    await ctx.server?.stop();
+  });
+  return ctx;
 }
 
 /** Poll `f` until it returns a truthy value or `ms` pass; returns the value or null. */

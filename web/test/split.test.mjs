@@ -10,43 +10,29 @@
 import assert from "node:assert/strict";
 import { mkdirSync } from "node:fs";
 import { join } from "node:path";
-import { after, before, describe, test } from "node:test";
-import { freePort, launch, missing, recordErrors, repo, sleep, startServer, waitFor } from "./harness.mjs";
+import { describe, test } from "node:test";
+import { missing, repo, servedPage, sleep, waitFor } from "./harness.mjs";
 
 const skip = missing() ?? false;
 
 describe("side by side (N = 2,000, 3,000 sphere tests)", { skip }, () => {
-  let server, browser, page;
-  const consoleErrors = [];
-
-  before(async () => {
-    server = await startServer(await freePort(), ["-n", "2000", "--budget", "3000tests"]);
-    browser = await launch();
-    page = await browser.browser.newPage();
-    recordErrors(page, consoleErrors);
-    await page.goto(server.url);
-  });
-
-  after(async () => {
-    await browser?.close();
-    await server?.stop();
-  });
+  const ctx = servedPage(["-n", "2000", "--budget", "3000tests"]);
 
   test("turned on from the page, the gaze side's true P is lower after the mouse rests 2 s", async () => {
-    assert.ok(await waitFor(() => page.evaluate(() => window.foveal.stats.framesApplied > 5), 20_000), "no frames");
-    await page.selectOption("#compare", "round-robin");
-    const on = await waitFor(() => page.evaluate(() => window.foveal.split.on && window.foveal.split.frames.length > 5), 30_000, 100);
-    assert.ok(on, `the side by side did not start: ${await page.textContent("#config-error")}`);
-    assert.equal(await page.isVisible("#scene-blind"), true);
-    assert.match(await page.textContent("#caption-blind"), /round-robin, gaze-blind/);
+    assert.ok(await waitFor(() => ctx.page.evaluate(() => window.foveal.stats.framesApplied > 5), 20_000), "no frames");
+    await ctx.page.selectOption("#compare", "round-robin");
+    const on = await waitFor(() => ctx.page.evaluate(() => window.foveal.split.on && window.foveal.split.frames.length > 5), 30_000, 100);
+    assert.ok(on, `the side by side did not start: ${await ctx.page.textContent("#config-error")}`);
+    assert.equal(await ctx.page.isVisible("#scene-blind"), true);
+    assert.match(await ctx.page.textContent("#caption-blind"), /round-robin, gaze-blind/);
 
     // Rest the mouse on the left view, away from the centre, and let 2 s of frames pass.
-    const box = await page.locator("#scene").boundingBox();
+    const box = await ctx.page.locator("#scene").boundingBox();
     const [x, y] = [0.3, 0.4];
-    await page.mouse.move(box.x + x * box.width, box.y + y * box.height);
+    await ctx.page.mouse.move(box.x + x * box.width, box.y + y * box.height);
     const settled = await waitFor(
       () =>
-        page.evaluate(
+        ctx.page.evaluate(
           ([x, y]) => {
             const f = window.foveal.split.frames;
             const last = f[f.length - 1];
@@ -59,7 +45,7 @@ describe("side by side (N = 2,000, 3,000 sphere tests)", { skip }, () => {
     );
     assert.ok(settled, "the fixation did not reach the mouse");
     await sleep(2_000);
-    const rested = await page.evaluate(
+    const rested = await ctx.page.evaluate(
       ([x, y, from]) => window.foveal.split.frames.filter((f) => f.index > from && Math.abs(f.x - x) < 0.01 && Math.abs(f.y - y) < 0.01),
       [x, y, settled],
     );
@@ -69,14 +55,14 @@ describe("side by side (N = 2,000, 3,000 sphere tests)", { skip }, () => {
     console.log(`# ${rested.length} frames at rest: true P gaze-steered ${gaze.toFixed(3)}, gaze-blind ${blind.toFixed(3)}`);
     assert.ok(gaze < blind, `true P gaze-steered ${gaze} is not below gaze-blind ${blind}`);
     // The caption under each view says its true P.
-    assert.match(await page.textContent("#caption-gaze"), /true P \d/);
-    assert.match(await page.textContent("#caption-blind"), /true P \d/);
+    assert.match(await ctx.page.textContent("#caption-gaze"), /true P \d/);
+    assert.match(await ctx.page.textContent("#caption-blind"), /true P \d/);
     // The P plot draws both true P.
-    const p = (await page.evaluate(() => window.foveal.plots.summary())).find((c) => c.title.startsWith("P,"));
+    const p = (await ctx.page.evaluate(() => window.foveal.plots.summary())).find((c) => c.title.startsWith("P,"));
     for (const label of ["P true (audit)", "P true, gaze-blind"]) {
       assert.ok(p.series.find((s) => s.label === label).values >= 2, `${label} has no line`);
     }
-    assert.deepEqual(consoleErrors, []);
+    assert.deepEqual(ctx.errors, []);
   });
 });
 
@@ -88,32 +74,20 @@ for (const [name, args] of [
   ["demo.png", ["--demo"]],
 ]) {
   describe(`side by side for the README's picture (${args.join(" ")})`, { skip: skip || !process.env.FOVEAL_SCREENSHOT }, () => {
-    let server, browser, page;
-
-    before(async () => {
-      server = await startServer(await freePort(), args);
-      browser = await launch();
-      page = await browser.browser.newPage();
-      await page.goto(server.url);
-    });
-
-    after(async () => {
-      await browser?.close();
-      await server?.stop();
-    });
+    const ctx = servedPage(args);
 
     test(`docs/figures/${name}`, async () => {
-      assert.ok(await waitFor(() => page.evaluate(() => window.foveal.split.frames.length > 5), 20_000, 100), "no compared frames");
-      await page.uncheck("#draw-thin");
-      const box = await page.locator("#scene").boundingBox();
-      await page.mouse.move(box.x + 0.3 * box.width, box.y + 0.4 * box.height);
+      assert.ok(await waitFor(() => ctx.page.evaluate(() => window.foveal.split.frames.length > 5), 20_000, 100), "no compared frames");
+      await ctx.page.uncheck("#draw-thin");
+      const box = await ctx.page.locator("#scene").boundingBox();
+      await ctx.page.mouse.move(box.x + 0.3 * box.width, box.y + 0.4 * box.height);
       await sleep(4_000);
-      const f = await page.evaluate(() => window.foveal.split.frames.slice(-60));
+      const f = await ctx.page.evaluate(() => window.foveal.split.frames.slice(-60));
       const mean = (k) => f.reduce((a, x) => a + x[k], 0) / f.length;
       console.log(`# picture: last ${f.length} frames, true P gaze-steered ${mean("gaze").toFixed(1)}, gaze-blind ${mean("blind").toFixed(1)}`);
       const dir = join(repo, "docs", "figures");
       mkdirSync(dir, { recursive: true });
-      await page.screenshot({ path: join(dir, name) });
+      await ctx.page.screenshot({ path: join(dir, name) });
     });
   });
 }

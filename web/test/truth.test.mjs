@@ -7,8 +7,8 @@
 //
 // A sphere-test budget makes the frames the same whatever the machine's load.
 import assert from "node:assert/strict";
-import { after, before, describe, test } from "node:test";
-import { freePort, launch, missing, recordErrors, startServer, waitFor } from "./harness.mjs";
+import { describe, test } from "node:test";
+import { missing, servedPage, waitFor } from "./harness.mjs";
 
 const skip = missing() ?? false;
 
@@ -56,28 +56,14 @@ function inspect() {
 }
 
 describe("deemed pairs coloured by their truth (N = 5,000, 3,000 sphere tests)", { skip }, () => {
-  let server, browser, page;
-  const consoleErrors = [];
-
-  before(async () => {
-    server = await startServer(await freePort(), ["-n", "5000", "--budget", "3000tests", "--audit"]);
-    browser = await launch();
-    page = await browser.browser.newPage();
-    recordErrors(page, consoleErrors);
-    await page.goto(server.url);
-  });
-
-  after(async () => {
-    await browser?.close();
-    await server?.stop();
-  });
+  const ctx = servedPage(["-n", "5000", "--budget", "3000tests", "--audit"]);
 
   test("with an audit, wrong guesses are drawn as deemed and right ones apart from them", async () => {
     const seen = await waitFor(async () => {
-      const s = await page.evaluate(inspect);
+      const s = await ctx.page.evaluate(inspect);
       return s && s.deemed > 0 && s.touchingAlone.length > 0 && s.apart > 0 && s;
     }, 20_000, 100);
-    assert.ok(seen, `no frame with both kinds of deemed pair: ${JSON.stringify(await page.evaluate(inspect))?.slice(0, 400)}`);
+    assert.ok(seen, `no frame with both kinds of deemed pair: ${JSON.stringify(await ctx.page.evaluate(inspect))?.slice(0, 400)}`);
     console.log(`# ${seen.deemed} deemed: ${seen.apart} truly apart, ${seen.touching} truly touching`);
     assert.equal(seen.truths, seen.deemed, "one truth per deemed pair");
     assert.equal(seen.apart + seen.touching, seen.deemed, "a whole audit leaves no pair unaudited");
@@ -85,43 +71,31 @@ describe("deemed pairs coloured by their truth (N = 5,000, 3,000 sphere tests)",
     assert.ok(seen.apartDrawn, "a wrong guess's body is not drawn in the deemed colour");
     assert.ok(seen.touchingDrawn, "a right guess's body is not drawn in its own colour");
     assert.ok(seen.legendTouching, "the legend does not name the right guesses");
-    const readout = await waitFor(() => page.evaluate(() => /wrong guesses/.test(document.getElementById("readout").textContent) && document.getElementById("readout").textContent), 5_000, 100);
+    const readout = await waitFor(() => ctx.page.evaluate(() => /wrong guesses/.test(document.getElementById("readout").textContent) && document.getElementById("readout").textContent), 5_000, 100);
     assert.match(readout || seen.readout, /wrong guesses \(deemed, truly apart\): [\d.]+% of \d+ pairs within 5°, [\d.]+% of \d+ beyond/);
   });
 
   test("without an audit every deemed pair is drawn as deemed", async () => {
-    await page.uncheck("#audit");
+    await ctx.page.uncheck("#audit");
     const plain = await waitFor(async () => {
-      const s = await page.evaluate(inspect);
+      const s = await ctx.page.evaluate(inspect);
       // A frame drawn on the scene the change reloaded (a reload clears the colours).
       return s && s.deemed > 0 && s.truths === 0 && s.deemedDrawn && s;
     }, 20_000, 100);
-    const last = await page.evaluate(inspect);
+    const last = await ctx.page.evaluate(inspect);
     assert.ok(plain, `frames still carry truths, or deemed bodies are not drawn as deemed, with the audit off: ${JSON.stringify([last?.truths, last?.notDeemed])}`);
     assert.equal(plain.legendTouching, false, "the legend names right guesses the frame cannot tell");
-    const readout = await waitFor(() => page.evaluate(() => {
+    const readout = await waitFor(() => ctx.page.evaluate(() => {
       const t = document.getElementById("readout").textContent;
       return /frame \d+/.test(t) && !/wrong guesses/.test(t) && t;
     }), 5_000, 100);
     assert.ok(readout, "the readout still counts wrong guesses without an audit");
-    assert.deepEqual(consoleErrors, []);
+    assert.deepEqual(ctx.errors, []);
   });
 });
 
 describe("thinning the far bodies (N = 5,000)", { skip }, () => {
-  let server, browser, page;
-
-  before(async () => {
-    server = await startServer(await freePort(), ["-n", "5000", "--budget", "3000tests"]);
-    browser = await launch();
-    page = await browser.browser.newPage();
-    await page.goto(server.url);
-  });
-
-  after(async () => {
-    await browser?.close();
-    await server?.stop();
-  });
+  const ctx = servedPage(["-n", "5000", "--budget", "3000tests"]);
 
   /** In the page: what the last split drew, and what it should have. */
   function drawn() {
@@ -138,15 +112,15 @@ describe("thinning the far bodies (N = 5,000)", { skip }, () => {
   }
 
   test("one far body in k is drawn, every near one, and the readout says so", async () => {
-    assert.ok(await waitFor(() => page.evaluate(() => window.foveal.stats.framesApplied > 3), 20_000), "no frames");
-    const adaptive = await page.evaluate(drawn);
+    assert.ok(await waitFor(() => ctx.page.evaluate(() => window.foveal.stats.framesApplied > 3), 20_000), "no frames");
+    const adaptive = await ctx.page.evaluate(drawn);
     console.log(`# drawing every body cost ${adaptive.drawMs.toFixed(0)} ms here; the page chose 1 in ${adaptive.stride}`);
-    await page.evaluate(() => {
+    await ctx.page.evaluate(() => {
       window.foveal.draw.thin = false;
       window.foveal.view.setFarStride(4);
     });
     const thin = await waitFor(async () => {
-      const d = await page.evaluate(drawn);
+      const d = await ctx.page.evaluate(drawn);
       return d.far > 0 && /drawn: every body within the foveal region, \d+ of the \d+ beyond \(1 in 4/.test(d.readout) && d;
     }, 5_000, 100);
     assert.ok(thin, "the readout does not say what is drawn");
@@ -156,11 +130,11 @@ describe("thinning the far bodies (N = 5,000)", { skip }, () => {
     assert.equal(thin.meshes, thin.bodies - thin.far + thin.farDrawn);
 
     // Unticked, every body is drawn again.
-    await page.uncheck("#draw-thin");
+    await ctx.page.uncheck("#draw-thin");
     const all = await waitFor(async () => {
-      const d = await page.evaluate(drawn);
+      const d = await ctx.page.evaluate(drawn);
       return d.stride === 1 && d.meshes === d.bodies && !/drawn: every body within/.test(d.readout) && d;
     }, 5_000, 100);
-    assert.ok(all, `still thinned: ${JSON.stringify(await page.evaluate(drawn))}`);
+    assert.ok(all, `still thinned: ${JSON.stringify(await ctx.page.evaluate(drawn))}`);
   });
 });
