@@ -7,8 +7,9 @@
 //! means per frame, and dropped frames as a sum (a slow terminal or network shows up there).
 //!
 //! The CSV has one row per received frame, header first; the column names are stable so that
-//! plotting scripts can rely on them ([`CSV_HEADER`]). Audit columns are empty when the server
-//! has audit off, so "no audit" is not confused with "zero false positives".
+//! plotting scripts can rely on them ([`CSV_HEADER`]; new ones are added at the end). Audit
+//! columns are empty when the server has audit off, so "no audit" is not confused with "zero
+//! false positives".
 
 use std::fmt::Write as _;
 use std::future::Future;
@@ -21,7 +22,7 @@ use tokio::time::Instant;
 use crate::ClientError;
 
 /// Columns of the frame CSV, in order.
-pub const CSV_COLUMNS: [&str; 29] = [
+pub const CSV_COLUMNS: [&str; 32] = [
     "index",
     "sim_time_s",
     "fixation_x",
@@ -51,6 +52,9 @@ pub const CSV_COLUMNS: [&str; 29] = [
     "delta_se",
     "p_se",
     "budget_spent_before_narrow",
+    "foveal_pairs",
+    "foveal_deemed",
+    "true_foveal_false_positives",
 ];
 
 /// The header line of the frame CSV (no terminator).
@@ -58,7 +62,7 @@ pub const CSV_HEADER: &str = "index,sim_time_s,fixation_x,fixation_y,fixation_ag
 fixation_source,collision_time_s,delta,p,candidate_pairs,real_collisions,deemed,sphere_tests,\
 dropped_before,true_false_positives,true_delta,true_p,budget_exhausted,integrate_s,broad_s,\
 narrow_s,response_s,bodies,resolved_per_level,received_at_s,metrics_stride,delta_se,p_se,\
-budget_spent_before_narrow";
+budget_spent_before_narrow,foveal_pairs,foveal_deemed,true_foveal_false_positives";
 
 /// Short name of a fixation source, as written in the CSV and the summary.
 #[must_use]
@@ -97,7 +101,7 @@ pub fn csv_row(frame: &pb::Frame, received_at_s: f64) -> String {
     // Writing to a String cannot fail.
     let _ = write!(
         row,
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
         frame.index,
         frame.sim_time_s,
         fixation.x,
@@ -128,6 +132,9 @@ pub fn csv_row(frame: &pb::Frame, received_at_s: f64) -> String {
         m.geometric_inaccuracy_se,
         m.perceived_inaccuracy_se,
         u8::from(m.budget_spent_before_narrow),
+        m.foveal_pairs,
+        m.foveal_deemed,
+        opt(audit.map(|a| a.true_foveal_false_positives.to_string())),
     );
     row
 }
@@ -448,11 +455,16 @@ mod tests {
                 true_false_positives: 2,
                 true_geometric_inaccuracy: 0.25,
                 true_perceived_inaccuracy: 0.125,
-                ..Default::default()
+                true_foveal_false_positives: 1,
             });
+            m.foveal_pairs = 6;
+            m.foveal_deemed = 2;
         }
         let row = csv_row(&audited, 0.0);
         assert!(row.contains(",2,0.25,0.125,"), "{row}");
+        // The wrong guesses near the fixation, beside the pairs there and those deemed.
+        assert!(row.ends_with(",6,2,1"), "{row}");
+        assert!(csv_row(&frame(9, 0.0, 0), 0.0).ends_with(",0,0,"));
     }
 
     #[test]
