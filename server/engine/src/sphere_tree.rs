@@ -625,22 +625,20 @@ fn fit(leaves: &[Vec4], cell: Option<(Vec3, f64)>, root_r: f64) -> Vec4 {
     };
     let exposure = |s: &Vec4| lens_volume(at(s).length(), f64::from(s.w) + root_r, 2.0 * root_r);
     let outward = ball.normalize_or_zero();
-    let mut candidates: Vec<Vec3> = (-4..=12)
-        .map(|k| ball + outward * (f64::from(k) * FIT_SHIFT * root_r))
-        .collect();
-    if let Some((centre, _)) = cell {
-        candidates.extend((0..=4).map(|k| ball + (centre - ball) * (f64::from(k) / 4.0)));
-    }
-    let mut best = holding(ball);
-    let mut least = exposure(&best);
-    for c in candidates {
-        let s = holding(c);
-        let v = exposure(&s);
-        if v < least {
-            (best, least) = (s, v);
-        }
-    }
-    best
+    let shifted = (-4..=12).map(|k| ball + outward * (f64::from(k) * FIT_SHIFT * root_r));
+    let towards_cell = cell.into_iter().flat_map(|(centre, _)| {
+        (0..=4).map(move |k| ball + (centre - ball) * (f64::from(k) / 4.0))
+    });
+    // The first of equals: the ball itself, then the candidates in order.
+    std::iter::once(ball)
+        .chain(shifted)
+        .chain(towards_cell)
+        .map(|c| {
+            let s = holding(c);
+            (exposure(&s), s)
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map_or_else(|| holding(ball), |(_, s)| s)
 }
 
 /// Volume of the intersection of two balls of radii `r1` and `r2` whose centres are `d` apart.
