@@ -154,7 +154,12 @@ impl Cone {
     #[inline]
     fn support(&self, d: DVec3) -> DVec3 {
         let along = d.dot(self.axis);
+        // Projected twice: for d nearly along the axis (the base disc's face) one pass leaves
+        // an axial residue of rounding as large as the perpendicular part itself, and the rim
+        // point built from it would lie off the disc, outside the cone, so that GJK could
+        // report a distance below the true one. The second pass puts it back on the disc.
         let perp = d - self.axis * along;
+        let perp = perp - self.axis * perp.dot(self.axis);
         let pl = perp.length();
         // The apex wins iff h (d·axis) >= r |d_perp| (both measured from the base centre).
         if self.height * along >= self.radius * pl {
@@ -1198,6 +1203,34 @@ mod tests {
         }
     }
 
+    /// A cone's support point lies in the cone for every direction, the nearly axial ones
+    /// included: there the perpendicular part is all rounding, and a rim point built from it
+    /// once lay 0.03 R off the base disc, which let GJK report two spikes 0.0004 R apart when
+    /// a separating plane kept them 0.018 R apart.
+    #[test]
+    fn support_points_stay_in_the_cone_along_the_axis() {
+        let g = geometry();
+        let axis = DVec3::new(-0.767198171862801, 0.3698868517216971, -0.5240140093678672);
+        let cone = g.cone(DVec3::new(-0.95, -0.12, -0.21), axis.normalize());
+        let off = perpendicular(cone.axis);
+        for scale in [0.0, 1e-17, 1e-16, 1e-15, 1e-13, 1e-10, 1e-6, 1e-2] {
+            for sign in [-1.0, 1.0] {
+                let d = cone.axis * sign + off * scale;
+                let p = cone.support(d) - cone.base;
+                let s = p.dot(cone.axis);
+                let radial = (p - cone.axis * s).length();
+                assert!(
+                    (-1e-12..=cone.height + 1e-12).contains(&s),
+                    "axial {s} at scale {scale}, sign {sign}"
+                );
+                assert!(
+                    radial <= cone.radius * (1.0 - s / cone.height) + 1e-12,
+                    "radial {radial} at axial {s}, scale {scale}, sign {sign}"
+                );
+            }
+        }
+    }
+
     #[test]
     fn point_cone_matches_the_triangle() {
         let k = Cone {
@@ -1286,7 +1319,9 @@ mod tests {
 
         /// Two spikes' gap along any direction never exceeds their distance (it is a proof of
         /// separation, never a guess), and along the direction between the nearest points it
-        /// is their distance.
+        /// is their distance, to within what GJK proved: where its search stalls on a cone's
+        /// curved rim (a few cases in a thousand) the distance it reports is an upper bound a
+        /// few 1e-6 R above the lower bound it proved, and the gap lies between the two.
         #[test]
         fn the_axis_gap_bounds_the_spikes_distance(
             x in -1.2f64..1.2, y in -1.2f64..1.2, z in -1.2f64..1.2,
@@ -1300,13 +1335,19 @@ mod tests {
             );
             let pose = Pose { rotation, translation: DVec3::new(x, y, z) };
             let (t, axis_b) = (pose.translation, b_axes(&pose)[j]);
-            let c = cones(&g.cone(DVec3::ZERO, AXES[i]), &g.cone(t, axis_b), g.eps);
+            let (ka, kb) = (g.cone(DVec3::ZERO, AXES[i]), g.cone(t, axis_b));
+            let search = gjk(&ka, &kb, g.eps, false);
+            let c = cones_from(&ka, &kb, &search, g.eps);
             let u = DVec3::from_array(u).normalize_or(DVec3::X);
             let gap = g.axis_gap(AXES[i], t, axis_b, u);
             proptest::prop_assert!(gap <= c.signed_distance().max(0.0) + 1e-9, "{gap} > {c:?}");
             if let Contact::Apart { distance, point_a, point_b } = c {
                 let along = g.axis_gap(AXES[i], t, axis_b, (point_b - point_a) / distance);
-                proptest::prop_assert!((along - distance).abs() <= 1e-6, "{along} vs {distance}");
+                proptest::prop_assert!(
+                    along <= distance + 1e-6 && along >= search.lower.min(distance) - 1e-6,
+                    "{along} outside [{}, {distance}]",
+                    search.lower
+                );
             }
         }
     }
