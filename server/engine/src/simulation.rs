@@ -42,6 +42,9 @@ pub struct Simulation {
     slots: Vec<u32>,
     /// The threads a frame runs on, with more than one (see [`Self::step`]).
     pool: Option<Arc<rayon::ThreadPool>>,
+    /// Regions the last frame's broad phase searched of its shedding order (None: it searched
+    /// every region, unordered), for [`Self::measured_at`].
+    last_searched: Option<usize>,
 }
 
 /// A pool of `threads` threads, or none for one: a frame on one thread runs where it is called.
@@ -147,6 +150,7 @@ impl Simulation {
             response: Response::default(),
             budget: FrameBudget::Unlimited,
             report: FrameReport::default(),
+            last_searched: None,
             next_index: 0,
             sim_time: 0.0,
             policy: FramePolicy::default(),
@@ -448,12 +452,14 @@ impl Simulation {
                     pacer.go_on(clock.now_ns(), pairs)
                 });
             frame.searched = pass.searched as usize;
+            self.last_searched = Some(frame.searched);
             r.regions = self.broad.regions().len() as u32;
             r.stale_regions = pass.stale;
             r.stale_pairs = pass.stale_pairs;
             r.foveal_stale = shedder.foveal_regions().saturating_sub(frame.searched) as u32;
         } else {
             self.broad.update(&self.world.position);
+            self.last_searched = None;
         }
         Lap::Timed
     }
@@ -600,6 +606,43 @@ impl Simulation {
             });
         }
         &self.report
+    }
+
+    /// The last frame as a viewer looking at `fixation` saw it, where the frame was scheduled
+    /// for the fixation it was given: the report with Δ, P and the foveal counts summed over
+    /// every pair for `fixation`, the regions a shedding broad phase left stale counted in its
+    /// fovea, and the audit (in audit mode) run again for it. What the frame did (its pairs,
+    /// timings, tests) is as it was. The control of what gaze buys: a frame scheduled for the
+    /// screen centre, measured where the viewer looked. Computed off the clock; the next frame
+    /// is unaffected. For the fixation the frame was given it is [`Self::measure_exactly`]'s
+    /// report.
+    pub fn measured_at(&mut self, fixation: Option<Fixation>) -> FrameReport {
+        let fixation = fixation.filter(Fixation::is_usable);
+        self.on_pool(|sim| {
+            let mut r = sim.report.clone();
+            r.fixation = fixation;
+            let input = frame_input(&sim.tree, &sim.world, &sim.broad, &sim.viewer);
+            let every_pair = crate::metrics::Effort {
+                sample_limit: u32::MAX,
+                ..crate::metrics::Effort::default()
+            };
+            sim.collider
+                .measure_metrics(&input, fixation, every_pair, None, &mut r);
+            if let Some(searched) = sim.last_searched {
+                r.foveal_stale = fixation.map_or(0, |f| {
+                    sim.policy
+                        .shedder
+                        .foveal_unsearched(searched, &sim.viewer, f) as u32
+                });
+            }
+            if let Some(missed) = r.audit.map(|a| a.missed_pairs) {
+                sim.collider.audit_frame(&input, fixation, &mut r);
+                if let Some(a) = r.audit.as_mut() {
+                    a.missed_pairs = missed;
+                }
+            }
+            r
+        })
     }
 
     /// Exact colliding pairs among the current candidates (each resolved to completion).
@@ -1004,6 +1047,67 @@ mod tests {
     }
 
     /// Under a whole-frame budget the report's foveal counts are those of the pairs themselves,
+    /// A frame measured where the viewer looked ([`Simulation::measured_at`]): for the fixation
+    /// it was scheduled for, the exact measurement with its own stale count; for another, the
+    /// foveal counts of that fovea (brute force), the audit's verdicts unchanged and its P
+    /// measured there, and the stale regions counted in that fovea.
+    #[test]
+    fn a_frame_measured_elsewhere_counts_that_fovea() {
+        use crate::budget::Ticking;
+        use crate::metrics::Fovea;
+        use crate::report::FOVEAL_DEG;
+        let mut sim = Simulation::new(SimConfig {
+            scene: SceneConfig::paper(20_000, 5),
+            scheduler: crate::config::SchedulerKind::Priced,
+            budget: BudgetSpec::WallMs(0.4),
+            audit: true,
+            ..SimConfig::default()
+        })
+        .expect("valid");
+        let clock = Ticking(std::sync::atomic::AtomicU64::new(0), 500);
+        let (steer, look) = (Fixation::at(0.5, 0.5), Fixation::at(0.15, 0.7));
+        let (mut stale_here, mut stale_there) = (0, 0);
+        for _ in 0..4 {
+            sim.step(Some(steer), &clock);
+            let exact = sim.measure_exactly().clone();
+            let own = sim.measured_at(Some(steer));
+            let key = |r: &FrameReport| {
+                (
+                    r.foveal_pairs,
+                    r.foveal_deemed,
+                    r.foveal_stale,
+                    r.geometric_inaccuracy,
+                    r.perceived_inaccuracy,
+                )
+            };
+            assert_eq!(key(&own), key(&exact));
+            assert_eq!(own.audit, exact.audit);
+            let there = sim.measured_at(Some(look));
+            let (world, viewer) = (sim.world(), sim.viewer());
+            let fovea = Fovea::new(viewer, viewer.to_pixels(look.x, look.y), FOVEAL_DEG);
+            let (mut foveal, mut deemed) = (0, 0);
+            for p in sim.pairs() {
+                let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
+                if fovea.contains_point(c) {
+                    foveal += 1;
+                    deemed += u32::from(p.status == crate::narrow_phase::PairStatus::Deemed);
+                }
+            }
+            assert_eq!((there.foveal_pairs, there.foveal_deemed), (foveal, deemed));
+            let verdicts = |r: &FrameReport| r.audit.map(|a| (a.false_positives, a.true_positives));
+            assert_eq!(verdicts(&there), verdicts(&exact));
+            assert_eq!(there.fixation, Some(look));
+            assert_ne!(there.perceived_inaccuracy, exact.perceived_inaccuracy);
+            stale_here += own.foveal_stale;
+            stale_there += there.foveal_stale;
+        }
+        // Scheduled for the centre, its own fovea is searched first and the viewer's is not.
+        assert!(stale_here == 0 && stale_there > 0, "{stale_here} {stale_there}");
+        // Unknown gaze: nothing is foveal.
+        let none = sim.measured_at(None);
+        assert_eq!((none.foveal_pairs, none.foveal_stale, none.perceived_inaccuracy), (0, 0, None));
+    }
+
     /// whether the foveal pass settled every foveal pair and the metrics took its count, or the
     /// budget cut the pass short and the metrics tested the pairs again.
     #[test]

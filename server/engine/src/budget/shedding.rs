@@ -203,6 +203,25 @@ impl Shedder {
         self.foveal_regions
     }
 
+    /// Regions of the last [`Self::order`] after its first `searched` that may hold a pair in
+    /// the fovea of a viewer at `fixation`, by the test [`Self::order`] puts first: for the
+    /// fixation the order was made for, [`Self::foveal_regions`] less `searched`; for another,
+    /// what a frame scheduled for one fixation left stale where the viewer looked at the other.
+    pub fn foveal_unsearched(&self, searched: usize, viewer: &Viewer, fixation: Fixation) -> usize {
+        let f = fixation.clamped();
+        let (px, radius) = (viewer.to_pixels(f.x, f.y), f.uncertainty_deg);
+        self.order
+            .iter()
+            .skip(searched)
+            .filter(|&&r| {
+                self.rects.get(r as usize).is_some_and(|rect| {
+                    (nearest_angle_deg(rect, viewer, px) - radius).max(0.0)
+                        <= FOVEAL_DEG + FOVEA_MARGIN_DEG
+                })
+            })
+            .count()
+    }
+
     /// The broad phase's pacing for a frame ending at `deadline` with a budget of `budget_ns`.
     pub fn pacer(&self, deadline: u64, budget_ns: u64) -> Pacer {
         // The regions that may hold foveal pairs are searched while the fixed share is left;
