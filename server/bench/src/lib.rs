@@ -42,6 +42,7 @@
 //! The two parts write separate files, so they can be run separately into one directory.
 
 pub mod calibrate;
+pub mod capacity;
 pub mod clock;
 pub mod contact;
 pub mod error;

@@ -33,6 +33,10 @@ enum Command {
     /// Measure the engine at N = 10,000, 100,000 and 1,000,000 with 1 and 2 threads, exact and with
     /// a frame budget: whole-step p50/p99, phase shares, ns per body, peak RSS, foveal exactness.
     Scale(ScaleArgs),
+    /// How many bodies a fixed frame budget holds with the viewer's fovea exact: the priced
+    /// scheduler with the gaze and told only the screen centre, round-robin and the exact frame,
+    /// N by N, each frame audited where the viewer looked (true P against N, capacity).
+    Capacity(CapacityArgs),
     /// Compare schedulers open loop: every scheduler and budget on the identical frames of one
     /// exact run, against the clairvoyant bound, with the gaze-blind control and model mismatch.
     OpenLoop(OpenLoopArgs),
@@ -1008,12 +1012,87 @@ fn scale(args: &ScaleArgs) -> Result<()> {
     Ok(())
 }
 
+#[derive(Debug, Args)]
+struct CapacityArgs {
+    /// Body counts, comma separated, increasing (default 50000,100000,200000,300000,400000,600000).
+    #[arg(long, value_delimiter = ',')]
+    n: Option<Vec<u32>>,
+    /// The whole frame's budget (ms).
+    #[arg(long, default_value_t = 16.0)]
+    budget_ms: f64,
+    /// Threads of every run.
+    #[arg(long, default_value_t = 2)]
+    threads: u32,
+    /// Measured frames per run.
+    #[arg(long, default_value_t = 100)]
+    frames: u32,
+    /// Uncounted warm-up frames per run.
+    #[arg(long, default_value_t = 30)]
+    warmup: u32,
+    /// Where the viewer looks: x,y as fractions of the screen.
+    #[arg(long, value_delimiter = ',', num_args = 2, default_values_t = [0.3, 0.4])]
+    viewer: Vec<f64>,
+    /// Scene seed.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// What "colliding" means: `shape` (the default) or `leaf-spheres`.
+    #[arg(long, default_value = "shape")]
+    truth: foveal_engine::Truth,
+    /// The sphere tree: `parts` (the default), `fitted` or `octree`.
+    #[arg(long, default_value = "parts")]
+    tree: foveal_engine::TreeKind,
+    /// Output directory (capacity.md, capacity.csv, capacity.svg and .png).
+    #[arg(long, default_value = foveal_bench::capacity::DEFAULT_OUT)]
+    out: PathBuf,
+}
+
+fn capacity(args: &CapacityArgs) -> Result<()> {
+    use foveal_bench::capacity as cap;
+    let [x, y] = <[f64; 2]>::try_from(args.viewer.as_slice())
+        .map_err(|_| anyhow::anyhow!("--viewer: give x,y, not {:?}", args.viewer))?;
+    let mut ns = args.n.clone().unwrap_or_else(|| cap::DEFAULT_NS.to_vec());
+    ns.sort_unstable();
+    ns.dedup();
+    let cfg = cap::CapacityConfig {
+        ns,
+        budget_ms: args.budget_ms,
+        threads: args.threads,
+        frames: args.frames,
+        warmup: args.warmup,
+        viewer: [x, y],
+        seed: args.seed,
+        truth: args.truth,
+        tree: args.tree,
+        out: args.out.clone(),
+    };
+    cfg.validate()?;
+    let exe = std::env::current_exe().context("locating the foveal-bench binary")?;
+    eprintln!(
+        "foveal-bench capacity: {} runs -> {}",
+        cfg.plan().len(),
+        cfg.out.display()
+    );
+    let out = cap::run(&cfg, &exe, true).context("capacity run failed")?;
+    std::fs::create_dir_all(&cfg.out).with_context(|| format!("creating {}", cfg.out.display()))?;
+    let md = cap::markdown(&out);
+    for (name, text) in [("capacity.md", &md), ("capacity.csv", &cap::csv(&out))] {
+        let path = cfg.out.join(name);
+        std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
+        eprintln!("wrote {}", path.display());
+    }
+    let fig = foveal_bench::plots::render(&cap::figure(&out), &cfg.out.join("capacity"))?;
+    eprintln!("wrote {} and {}", fig.svg.display(), fig.png.display());
+    print!("{md}");
+    Ok(())
+}
+
 fn main() -> Result<()> {
     let cli = Cli::parse();
     match &cli.command {
         Command::Study(args) => study(args),
         Command::Stress(args) => stress(args),
         Command::Scale(args) => scale(args),
+        Command::Capacity(args) => capacity(args),
         Command::OpenLoop(args) => open_loop(args),
         Command::Calibrate(args) => calibrate(args),
         Command::Contact(args) => contact(args),

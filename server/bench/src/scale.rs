@@ -175,6 +175,18 @@ pub struct RunSpec {
     pub warmup: u32,
     /// Measured frames.
     pub frames: u32,
+    /// Where the viewer looks, as a fraction of the screen (None: the screen centre).
+    #[serde(default)]
+    pub viewer: Option<[f64; 2]>,
+    /// The scheduler is told the screen centre while the viewer looks at `viewer`: the control
+    /// without an eye tracker. Every count at the fovea is then measured where the viewer
+    /// looked ([`Simulation::measured_at`]).
+    #[serde(default)]
+    pub steer_centre: bool,
+    /// Audit every frame where the viewer looked, off the clock: the true P of
+    /// [`RunResult::true_p_mean`].
+    #[serde(default)]
+    pub audit: bool,
 }
 
 /// What one run measured.
@@ -213,6 +225,10 @@ pub struct RunResult {
     pub stale_pairs_mean: f64,
     /// Mean candidate pairs within 5 degrees of the fixation per frame.
     pub foveal_pairs_mean: f64,
+    /// Mean regions per frame that may hold a pair within 5 degrees of the fixation and were
+    /// left unsearched (`FrameReport::foveal_stale`).
+    #[serde(default)]
+    pub foveal_stale_mean: f64,
     /// Mean candidate pairs per frame.
     pub candidates_mean: f64,
     /// Mean deemed pairs per frame.
@@ -237,6 +253,9 @@ pub struct RunResult {
     /// child).
     #[serde(default)]
     pub round: u32,
+    /// Mean audited true P per frame where the viewer looked (with [`RunSpec::audit`]).
+    #[serde(default)]
+    pub true_p_mean: Option<f64>,
     /// Every measured frame, in order: a p99 is one or two frames, and whether those were a
     /// phase the engine mispredicted or a stall of the machine shows only frame by frame
     /// (`frames.csv`).
@@ -446,6 +465,9 @@ impl ScaleConfig {
                     seed: self.seed,
                     warmup,
                     frames,
+                    viewer: None,
+                    steer_centre: false,
+                    audit: false,
                 };
                 for &threads in &self.threads {
                     out.push(spec(threads, BroadPhaseKind::Auto));
@@ -471,6 +493,7 @@ fn sim_config(spec: &RunSpec) -> SimConfig {
         budget: spec.mode.budget(),
         scheduler: spec.scheduler,
         fovea_first: spec.fovea_first,
+        // Audited off the clock, after the step (see `run_one`).
         audit: false,
         threads: spec.threads,
         broad_phase: spec.broad_phase,
@@ -613,7 +636,16 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
     let mut sim = Simulation::new(sim_config(spec))?;
     let setup_s = started.elapsed().as_secs_f64();
     let clock = InstantClock::new();
-    let fixation = Some(Fixation::at(0.5, 0.5));
+    let [vx, vy] = spec.viewer.unwrap_or([0.5, 0.5]);
+    let viewer = Some(Fixation::at(vx, vy));
+    let fixation = if spec.steer_centre {
+        Some(Fixation::at(0.5, 0.5))
+    } else {
+        viewer
+    };
+    // Measured where the viewer looked, off the clock, whenever that is not what the frame
+    // measured itself: every run of a comparison does the same work between its frames.
+    let remeasure = spec.audit || spec.steer_centre;
     let started = Instant::now();
     for _ in 0..spec.warmup {
         sim.step(fixation, &clock);
@@ -628,14 +660,23 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         (0u64, 0u64, 0u64, 0u64, 0u64);
     let (mut stale_frames, mut stale_regions, mut stale_pairs, mut regions) = (0u64, 0u64, 0u64, 0);
     let (mut narrow_ns, mut exact_fit) = (0u64, 0u64);
+    let (mut true_p, mut audited, mut foveal_stale) = (0.0, 0u64, 0u64);
     let mut frame_trace = Vec::with_capacity(frames);
     for _ in 0..frames {
         let t = Instant::now();
-        let r = sim.step(fixation, &clock);
+        sim.step(fixation, &clock);
         let ms = t.elapsed().as_secs_f64() * 1e3;
+        let seen = remeasure.then(|| sim.measured_at(viewer, spec.audit));
+        let r = sim.last_report();
+        // The fovea's counts where the viewer looked; what the frame did, as it did it.
+        let at_viewer = seen.as_ref().unwrap_or(r);
+        if let Some(p) = at_viewer.audit.and_then(|a| a.perceived_inaccuracy) {
+            true_p += p;
+            audited += 1;
+        }
         step_ms.push(ms);
         let ph = phases(&r.profile);
-        let foveal_exact = r.foveal_deemed == 0 && r.foveal_stale == 0;
+        let foveal_exact = at_viewer.foveal_deemed == 0 && at_viewer.foveal_stale == 0;
         frame_trace.push(FrameSample {
             step_ms: ms,
             phases_ns: ph.iter().map(|(_, ns)| *ns).collect(),
@@ -659,7 +700,8 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         stale_regions += u64::from(r.stale_regions);
         stale_pairs += u64::from(r.stale_pairs);
         regions = r.regions;
-        foveal += u64::from(r.foveal_pairs);
+        foveal += u64::from(at_viewer.foveal_pairs);
+        foveal_stale += u64::from(at_viewer.foveal_stale);
         candidates += u64::from(r.candidate_pairs);
         deemed += u64::from(r.deemed);
         tests += r.sphere_tests;
@@ -696,12 +738,14 @@ pub fn run_one(spec: &RunSpec) -> Result<RunResult, ScaleError> {
         regions,
         stale_pairs_mean: mean(stale_pairs),
         foveal_pairs_mean: mean(foveal),
+        foveal_stale_mean: mean(foveal_stale),
         candidates_mean: mean(candidates),
         deemed_mean: mean(deemed),
         sphere_tests_mean: mean(tests),
         settled_per_ms: (candidates - deemed.min(candidates)) as f64
             / (narrow_ns.max(1) as f64 * 1e-6),
         exact_fit_share: mean(exact_fit),
+        true_p_mean: (audited > 0).then(|| true_p / audited as f64),
         setup_s,
         warmup_s,
         load1_start,
@@ -1038,14 +1082,14 @@ fn phase_names(results: &[RunResult]) -> Vec<String> {
     names
 }
 
-fn fmt_load(l: Option<[f64; 3]>) -> String {
+pub fn fmt_load(l: Option<[f64; 3]>) -> String {
     l.map_or("unavailable".into(), |l| {
         format!("{:.2} {:.2} {:.2}", l[0], l[1], l[2])
     })
 }
 
 /// Thousands separators, for N in tables.
-fn grouped(n: u32) -> String {
+pub fn grouped(n: u32) -> String {
     let s = n.to_string();
     let mut out = String::new();
     for (i, c) in s.chars().enumerate() {
@@ -1465,6 +1509,9 @@ mod tests {
             seed: 3,
             warmup: 2,
             frames: 7,
+            viewer: None,
+            steer_centre: false,
+            audit: false,
         };
         let mut r = run_one(&spec).expect("a small run");
         r.round = 2;
@@ -1553,11 +1600,13 @@ mod tests {
             regions: 0,
             stale_pairs_mean: 0.0,
             foveal_pairs_mean: 0.0,
+            foveal_stale_mean: 0.0,
             candidates_mean: 0.0,
             deemed_mean: 0.0,
             sphere_tests_mean: 0.0,
             settled_per_ms: 0.0,
             exact_fit_share: 0.0,
+            true_p_mean: None,
             setup_s: 0.0,
             warmup_s: 0.0,
             load1_start: None,

@@ -891,6 +891,18 @@ impl Collider {
         if !self.config.audit {
             return;
         }
+        self.audit_now(input, fixation, r);
+    }
+
+    /// The audit of [`Self::audit_frame`], whether or not the config asks for it: for a frame
+    /// measured again off the clock (`Simulation::measured_at`).
+    pub(crate) fn audit_now(
+        &mut self,
+        input: &FrameInput<'_>,
+        fixation: Option<Fixation>,
+        r: &mut FrameReport,
+    ) {
+        self.deemed_truth.clear();
         let view = self.measure_view(input, fixation);
         r.audit = Some(audit(
             &self.narrow,

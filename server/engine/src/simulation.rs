@@ -611,12 +611,13 @@ impl Simulation {
     /// The last frame as a viewer looking at `fixation` saw it, where the frame was scheduled
     /// for the fixation it was given: the report with Δ, P and the foveal counts summed over
     /// every pair for `fixation`, the regions a shedding broad phase left stale counted in its
-    /// fovea, and the audit (in audit mode) run again for it. What the frame did (its pairs,
-    /// timings, tests) is as it was. The control of what gaze buys: a frame scheduled for the
-    /// screen centre, measured where the viewer looked. Computed off the clock; the next frame
-    /// is unaffected. For the fixation the frame was given it is [`Self::measure_exactly`]'s
-    /// report.
-    pub fn measured_at(&mut self, fixation: Option<Fixation>) -> FrameReport {
+    /// fovea, and, in audit mode or with `audit`, the audit run for it (a frame not in audit
+    /// mode keeps the audit out of its own step, and so out of a timing of it). What the frame
+    /// did (its pairs, timings, tests) is as it was. The control of what gaze buys: a frame
+    /// scheduled for the screen centre, measured where the viewer looked. Computed off the
+    /// clock; the next frame is unaffected. For the fixation the frame was given it is
+    /// [`Self::measure_exactly`]'s report.
+    pub fn measured_at(&mut self, fixation: Option<Fixation>, audit: bool) -> FrameReport {
         let fixation = fixation.filter(Fixation::is_usable);
         self.on_pool(|sim| {
             let mut r = sim.report.clone();
@@ -635,8 +636,15 @@ impl Simulation {
                         .foveal_unsearched(searched, &sim.viewer, f) as u32
                 });
             }
-            if let Some(missed) = r.audit.map(|a| a.missed_pairs) {
-                sim.collider.audit_frame(&input, fixation, &mut r);
+            if audit || r.audit.is_some() {
+                let missed = match r.audit {
+                    Some(a) => a.missed_pairs,
+                    None if r.stale_regions > 0 => {
+                        missed_pairs(sim.broad.pairs(), sim.broad.all_pairs())
+                    }
+                    None => 0,
+                };
+                sim.collider.audit_now(&input, fixation, &mut r);
                 if let Some(a) = r.audit.as_mut() {
                     a.missed_pairs = missed;
                 }
@@ -1070,7 +1078,7 @@ mod tests {
         for _ in 0..4 {
             sim.step(Some(steer), &clock);
             let exact = sim.measure_exactly().clone();
-            let own = sim.measured_at(Some(steer));
+            let own = sim.measured_at(Some(steer), false);
             let key = |r: &FrameReport| {
                 (
                     r.foveal_pairs,
@@ -1082,7 +1090,7 @@ mod tests {
             };
             assert_eq!(key(&own), key(&exact));
             assert_eq!(own.audit, exact.audit);
-            let there = sim.measured_at(Some(look));
+            let there = sim.measured_at(Some(look), false);
             let (world, viewer) = (sim.world(), sim.viewer());
             let fovea = Fovea::new(viewer, viewer.to_pixels(look.x, look.y), FOVEAL_DEG);
             let (mut foveal, mut deemed) = (0, 0);
@@ -1102,10 +1110,20 @@ mod tests {
             stale_there += there.foveal_stale;
         }
         // Scheduled for the centre, its own fovea is searched first and the viewer's is not.
-        assert!(stale_here == 0 && stale_there > 0, "{stale_here} {stale_there}");
+        assert!(
+            stale_here == 0 && stale_there > 0,
+            "{stale_here} {stale_there}"
+        );
         // Unknown gaze: nothing is foveal.
-        let none = sim.measured_at(None);
-        assert_eq!((none.foveal_pairs, none.foveal_stale, none.perceived_inaccuracy), (0, 0, None));
+        let none = sim.measured_at(None, false);
+        assert_eq!(
+            (
+                none.foveal_pairs,
+                none.foveal_stale,
+                none.perceived_inaccuracy
+            ),
+            (0, 0, None)
+        );
     }
 
     /// whether the foveal pass settled every foveal pair and the metrics took its count, or the
