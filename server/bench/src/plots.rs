@@ -544,6 +544,7 @@ mod tests {
             mean: m,
             half: 0.1 * m,
             n: 5,
+            non_finite: 0,
         };
         let fig = Figure {
             panels: vec![Panel {

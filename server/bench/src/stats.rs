@@ -79,14 +79,23 @@ pub struct MeanCi {
     pub half: f64,
     /// Replicates counted (finite values only).
     pub n: u64,
+    /// Replicates given that were not finite (a ratio over a zero, a metric never measured):
+    /// left out of the mean and the interval, and said so by [`Self::fmt`], never dropped
+    /// silently.
+    pub non_finite: u64,
 }
 
 impl MeanCi {
-    /// From replicate values; non-finite ones are dropped.
+    /// From replicate values; non-finite ones are left out and counted ([`Self::non_finite`]).
     pub fn of(values: impl IntoIterator<Item = f64>) -> Self {
         let mut a = Accum::default();
+        let mut non_finite = 0;
         for v in values {
-            a.push(v);
+            if v.is_finite() {
+                a.push(v);
+            } else {
+                non_finite += 1;
+            }
         }
         let n = a.count();
         let half = if n >= 2 {
@@ -98,6 +107,7 @@ impl MeanCi {
             mean: a.mean(),
             half,
             n,
+            non_finite,
         }
     }
 
@@ -111,12 +121,22 @@ impl MeanCi {
         self.mean + self.half
     }
 
-    /// `mean ± half` with `digits` significant digits (`mean` alone without a CI).
+    /// `mean ± half` with `digits` significant digits (`mean` alone without a CI); where some
+    /// replicates were not finite, how many were counted and how many were not, e.g.
+    /// `0.8 ± 0.1 (n = 3; 2 non-finite)`, or `non-finite (5 of 5)` when none was finite.
     pub fn fmt(&self, digits: usize) -> String {
-        if self.half.is_finite() {
+        if self.non_finite > 0 && self.n == 0 {
+            return format!("non-finite ({0} of {0})", self.non_finite);
+        }
+        let value = if self.half.is_finite() {
             format!("{} ± {}", sig(self.mean, digits), sig(self.half, 2))
         } else {
             sig(self.mean, digits)
+        };
+        if self.non_finite > 0 {
+            format!("{value} (n = {}; {} non-finite)", self.n, self.non_finite)
+        } else {
+            value
         }
     }
 }
@@ -141,6 +161,22 @@ pub fn sig(x: f64, digits: usize) -> String {
 mod tests {
     use super::*;
 
+    /// A ratio over a zero (a scheduler with P against one without) is not finite: it is left
+    /// out of the mean and said so, where it used to vanish and leave "0 ± 0".
+    #[test]
+    fn non_finite_replicates_are_counted_and_shown() {
+        let ratios = [f64::NAN, 0.8, f64::INFINITY, 0.9, 0.7];
+        let m = MeanCi::of(ratios);
+        assert_eq!((m.n, m.non_finite), (3, 2));
+        assert!((m.mean - 0.8).abs() < 1e-12);
+        assert_eq!(
+            m.fmt(2),
+            format!("0.80 ± {} (n = 3; 2 non-finite)", sig(m.half, 2))
+        );
+        let none = MeanCi::of([f64::INFINITY; 5]);
+        assert_eq!(none.fmt(2), "non-finite (5 of 5)");
+    }
+
     #[test]
     fn welford_matches_two_pass() {
         let xs = [1.0, 2.0, 4.0, 8.0, f64::NAN];
@@ -164,6 +200,8 @@ mod tests {
         // sd = sqrt(2.5), t(4) = 2.776
         assert!((m.half - 2.776 * 2.5f64.sqrt() / 5f64.sqrt()).abs() < 1e-9);
         assert!(MeanCi::of([1.0]).half.is_nan());
+        assert_eq!(m.non_finite, 0);
+        assert_eq!(m.fmt(3), "3.00 ± 2.0");
         assert_eq!(sig(0.012345, 3), "0.0123");
         assert_eq!(sig(1234.6, 3), "1235");
     }
