@@ -93,7 +93,7 @@ describe("viewer at N = 500 under a sphere-test budget", { skip }, () => {
     const at = (x, y) => page.mouse.move(box.x + x * box.width, box.y + y * box.height);
     // Three moves from elsewhere to (0.2, 0.3), each reported by the server within 2 s. How
     // long it took is printed, not held to a bound: on a shared machine a timing is a
-    // benchmark's figure (docs/BENCHMARKS.md, "The browser viewer"), not a test's verdict.
+    // benchmark's figure (docs/BENCHMARKS.md, "Latency and fan-out"), not a test's verdict.
     // The server's report is its frame stream: the first frame whose fixation is the mouse.
     const watching = new AbortController();
     let seenAt = null;
