@@ -81,7 +81,10 @@ impl Response {
         let normal = |&(a, b, real): &(u32, u32, bool)| -> Vec3 {
             let (a, b) = (a as usize, b as usize);
             if real {
-                let c = tree.geometry().contact(&shape_pose(world_ref, a, b));
+                // A real collision was settled touching by the shape test on this very pose.
+                let c = tree
+                    .geometry()
+                    .contact_of_touching(&shape_pose(world_ref, a, b));
                 world_ref.orientation[a] * c.normal()
             } else {
                 (world_ref.position[b] - world_ref.position[a]).normalize_or(Vec3::X)

@@ -415,13 +415,34 @@ impl StarGeometry {
                 return c;
             }
         }
-        let (order, len) = self.part_order(t, &axes_b, f64::INFINITY);
+        self.nearest(t, &axes_b)
+    }
+
+    /// [`Self::contact`] of a pose that [`Self::intersects`] has already found touching: the
+    /// same contact, without that test again. The response's real collisions are such poses
+    /// (the narrow phase settled each by that very test, on the same pose), and the test was
+    /// a sixth of a real collision's contact: 11.9 against 10.0 µs a contact, medians of 15
+    /// interleaved rounds over the 541 real collisions of a 10,000-body frame.
+    pub fn contact_of_touching(&self, pose: &Pose) -> Contact {
+        let t = pose.translation;
+        let axes_b = b_axes(pose);
+        let (order, len) = self.part_order(t, &axes_b, self.eps);
+        if let Some(c) = self.deepest(t, &axes_b, &order[..len]) {
+            return c;
+        }
+        self.nearest(t, &axes_b)
+    }
+
+    /// The nearest part pair's contact (the least signed distance): the part pairs in order of
+    /// their lower bounds, until a bound cannot beat the best found.
+    fn nearest(&self, t: DVec3, axes_b: &[DVec3; 6]) -> Contact {
+        let (order, len) = self.part_order(t, axes_b, f64::INFINITY);
         let mut best: Option<(f64, Contact)> = None;
         for &(lower, i, j) in &order[..len] {
             if best.is_some_and(|(s, _)| lower >= s) {
                 break;
             }
-            let c = self.part_contact(t, &axes_b, usize::from(i), usize::from(j));
+            let c = self.part_contact(t, axes_b, usize::from(i), usize::from(j));
             let s = c.signed_distance();
             if best.is_none_or(|(b, _)| s < b) {
                 best = Some((s, c));
@@ -1315,6 +1336,22 @@ mod tests {
             } else {
                 proptest::prop_assert!((c.signed_distance() - all).abs() <= 1e-9, "{c:?} vs {all}");
             }
+        }
+
+        /// For a touching pose, the contact without the touching test is the contact, bit for
+        /// bit.
+        #[test]
+        fn a_touching_poses_contact_needs_no_second_test(
+            x in -0.9f64..0.9, y in -0.9f64..0.9, z in -0.9f64..0.9,
+            q in proptest::array::uniform4(-1.0f64..1.0),
+        ) {
+            let g = geometry();
+            let rotation = DMat3::from_quat(
+                glam::DQuat::from_xyzw(q[0], q[1], q[2], q[3] + 1e-3).normalize(),
+            );
+            let pose = Pose { rotation, translation: DVec3::new(x, y, z) };
+            proptest::prop_assume!(g.intersects(&pose));
+            proptest::prop_assert_eq!(g.contact_of_touching(&pose), g.contact(&pose));
         }
 
         /// Two spikes' gap along any direction never exceeds their distance (it is a proof of
