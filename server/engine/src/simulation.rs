@@ -1055,6 +1055,24 @@ mod tests {
     }
 
     /// Under a whole-frame budget the report's foveal counts are those of the pairs themselves,
+    /// The last frame's candidate pairs whose centre lies within 5 degrees of a fixation at
+    /// (`x`, `y`), and how many of them were deemed, pair by pair.
+    fn foveal_by_brute_force(sim: &Simulation, x: f64, y: f64) -> (u32, u32) {
+        use crate::metrics::Fovea;
+        use crate::report::FOVEAL_DEG;
+        let (world, viewer) = (sim.world(), sim.viewer());
+        let fovea = Fovea::new(viewer, viewer.to_pixels(x, y), FOVEAL_DEG);
+        let (mut foveal, mut deemed) = (0, 0);
+        for p in sim.pairs() {
+            let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
+            if fovea.contains_point(c) {
+                foveal += 1;
+                deemed += u32::from(p.status == crate::narrow_phase::PairStatus::Deemed);
+            }
+        }
+        (foveal, deemed)
+    }
+
     /// A frame measured where the viewer looked ([`Simulation::measured_at`]): for the fixation
     /// it was scheduled for, the exact measurement with its own stale count; for another, the
     /// foveal counts of that fovea (brute force), the audit's verdicts unchanged and its P
@@ -1062,8 +1080,6 @@ mod tests {
     #[test]
     fn a_frame_measured_elsewhere_counts_that_fovea() {
         use crate::budget::Ticking;
-        use crate::metrics::Fovea;
-        use crate::report::FOVEAL_DEG;
         let mut sim = Simulation::new(SimConfig {
             scene: SceneConfig::paper(20_000, 5),
             scheduler: crate::config::SchedulerKind::Priced,
@@ -1091,17 +1107,8 @@ mod tests {
             assert_eq!(key(&own), key(&exact));
             assert_eq!(own.audit, exact.audit);
             let there = sim.measured_at(Some(look), false);
-            let (world, viewer) = (sim.world(), sim.viewer());
-            let fovea = Fovea::new(viewer, viewer.to_pixels(look.x, look.y), FOVEAL_DEG);
-            let (mut foveal, mut deemed) = (0, 0);
-            for p in sim.pairs() {
-                let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
-                if fovea.contains_point(c) {
-                    foveal += 1;
-                    deemed += u32::from(p.status == crate::narrow_phase::PairStatus::Deemed);
-                }
-            }
-            assert_eq!((there.foveal_pairs, there.foveal_deemed), (foveal, deemed));
+            let brute = foveal_by_brute_force(&sim, look.x, look.y);
+            assert_eq!((there.foveal_pairs, there.foveal_deemed), brute);
             let verdicts = |r: &FrameReport| r.audit.map(|a| (a.false_positives, a.true_positives));
             assert_eq!(verdicts(&there), verdicts(&exact));
             assert_eq!(there.fixation, Some(look));
@@ -1131,8 +1138,6 @@ mod tests {
     #[test]
     fn the_foveal_counts_are_exact_whoever_counts_them() {
         use crate::budget::Ticking;
-        use crate::metrics::Fovea;
-        use crate::report::FOVEAL_DEG;
         let (mut known, mut tested) = (0, 0);
         for (budget_ns, fx) in [
             (30_000_000u64, 0.5),
@@ -1155,16 +1160,7 @@ mod tests {
                 if r.foveal_stale > 0 {
                     continue;
                 }
-                let (world, viewer) = (sim.world(), sim.viewer());
-                let fovea = Fovea::new(viewer, viewer.to_pixels(fx, 0.5), FOVEAL_DEG);
-                let (mut foveal, mut deemed) = (0, 0);
-                for p in sim.pairs() {
-                    let c = (world.position[p.a as usize] + world.position[p.b as usize]) * 0.5;
-                    if fovea.contains_point(c) {
-                        foveal += 1;
-                        deemed += u32::from(p.status == crate::narrow_phase::PairStatus::Deemed);
-                    }
-                }
+                let (foveal, deemed) = foveal_by_brute_force(&sim, fx, 0.5);
                 assert_eq!((r.foveal_pairs, r.foveal_deemed), (foveal, deemed));
                 assert!(foveal > 0);
                 match sim.collider.foveal_known() {
