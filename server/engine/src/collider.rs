@@ -887,11 +887,11 @@ impl Collider {
         fixation: Option<Fixation>,
         r: &mut FrameReport,
     ) {
-        self.deemed_truth.clear();
-        if !self.config.audit {
-            return;
+        if self.config.audit {
+            self.audit_now(input, fixation, r);
+        } else {
+            self.deemed_truth.clear();
         }
-        self.audit_now(input, fixation, r);
     }
 
     /// The audit of [`Self::audit_frame`], whether or not the config asks for it: for a frame

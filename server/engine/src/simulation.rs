@@ -1054,7 +1054,6 @@ mod tests {
         assert!(sampled >= 3, "only {sampled} frames sampled");
     }
 
-    /// Under a whole-frame budget the report's foveal counts are those of the pairs themselves,
     /// The last frame's candidate pairs whose centre lies within 5 degrees of a fixation at
     /// (`x`, `y`), and how many of them were deemed, pair by pair.
     fn foveal_by_brute_force(sim: &Simulation, x: f64, y: f64) -> (u32, u32) {
@@ -1133,6 +1132,7 @@ mod tests {
         );
     }
 
+    /// Under a whole-frame budget the report's foveal counts are those of the pairs themselves,
     /// whether the foveal pass settled every foveal pair and the metrics took its count, or the
     /// budget cut the pass short and the metrics tested the pairs again.
     #[test]

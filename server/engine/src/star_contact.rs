@@ -402,20 +402,10 @@ impl StarGeometry {
     /// Part pairs are taken in order of their bounding spheres' separation, a lower bound on
     /// their signed distance, and the search stops when that bound cannot beat the best found.
     pub fn contact(&self, pose: &Pose) -> Contact {
-        let t = pose.translation;
-        let axes_b = b_axes(pose);
-        // Touching stars (the response asks for every real collision): the deepest part pair is
-        // one that touches, so only the part pairs that can touch are ordered, each is first
-        // tested yes or no, and only the touching ones pay for a depth (EPA for two spikes). A
-        // part pair that does not touch has a signed distance of at least 0 and cannot be the
-        // deepest.
-        if self.intersects_or_bound(pose).is_none() {
-            let (order, len) = self.part_order(t, &axes_b, self.eps);
-            if let Some(c) = self.deepest(t, &axes_b, &order[..len]) {
-                return c;
-            }
+        if self.intersects(pose) {
+            return self.contact_of_touching(pose);
         }
-        self.nearest(t, &axes_b)
+        self.nearest(pose.translation, &b_axes(pose))
     }
 
     /// [`Self::contact`] of a pose that [`Self::intersects`] has already found touching: the
@@ -426,6 +416,10 @@ impl StarGeometry {
     pub fn contact_of_touching(&self, pose: &Pose) -> Contact {
         let t = pose.translation;
         let axes_b = b_axes(pose);
+        // Touching stars: the deepest part pair is one that touches, so only the part pairs
+        // that can touch are ordered, each is first tested yes or no, and only the touching
+        // ones pay for a depth (EPA for two spikes). A part pair that does not touch has a
+        // signed distance of at least 0 and cannot be the deepest.
         let (order, len) = self.part_order(t, &axes_b, self.eps);
         if let Some(c) = self.deepest(t, &axes_b, &order[..len]) {
             return c;

@@ -179,7 +179,7 @@ impl Shedder {
             let age = f64::from(self.age[r]);
             let (tier, key) = match fixation_px {
                 Some((px, radius)) => {
-                    let e = (nearest_angle_deg(&self.rects[r], viewer, px) - radius).max(0.0);
+                    let e = fovea_distance_deg(&self.rects[r], viewer, px, radius);
                     if e <= FOVEAL_DEG + FOVEA_MARGIN_DEG {
                         self.foveal_regions += 1;
                         (0, e)
@@ -215,8 +215,7 @@ impl Shedder {
             .skip(searched)
             .filter(|&&r| {
                 self.rects.get(r as usize).is_some_and(|rect| {
-                    (nearest_angle_deg(rect, viewer, px) - radius).max(0.0)
-                        <= FOVEAL_DEG + FOVEA_MARGIN_DEG
+                    fovea_distance_deg(rect, viewer, px, radius) <= FOVEAL_DEG + FOVEA_MARGIN_DEG
                 })
             })
             .count()
@@ -373,6 +372,18 @@ fn envelope(old: Option<f64>, cost: f64, fall: f64) -> f64 {
         Some(old) => (1.0 - fall) * old + fall * cost,
         None => cost,
     }
+}
+
+/// How far (degrees) a region's screen rectangle lies beyond a fixation at `fixation_px` whose
+/// uncertainty is `radius_deg`: 0 when it reaches the fixation's uncertain disc. A region within
+/// [`FOVEAL_DEG`] plus [`FOVEA_MARGIN_DEG`] of it may hold foveal pairs.
+fn fovea_distance_deg(
+    rect: &[f64; 4],
+    viewer: &Viewer,
+    fixation_px: [f64; 2],
+    radius_deg: f64,
+) -> f64 {
+    (nearest_angle_deg(rect, viewer, fixation_px) - radius_deg).max(0.0)
 }
 
 /// The least visual angle (degrees) from `fixation_px` to a screen rectangle of
