@@ -162,6 +162,7 @@ fn merge(args: &MergeArgs) -> Result<()> {
             for f in &out.files {
                 println!("{}", f.display());
             }
+            write_study_stamp(&cfg.out)?;
             cfg.out
         }
         "open-loop" => {
@@ -391,7 +392,8 @@ struct OpenLoopProtocol {
     /// Body counts, comma separated (default 500,10000).
     #[arg(long, value_delimiter = ',')]
     n: Option<Vec<u32>>,
-    /// Seeds 1..=S (default 5).
+    /// The first S preregistered evaluation seeds, 201..=200+S (default 5; disjoint from the
+    /// calibration's).
     #[arg(long)]
     seeds: Option<u64>,
     /// Frames per run at every N (default 1,000 at N = 500, 200 at N = 10,000).
@@ -467,7 +469,7 @@ impl OpenLoopProtocol {
             cfg.ns = n.clone();
         }
         if let Some(s) = self.seeds {
-            cfg.seeds = (1..=s.max(1)).collect();
+            cfg.seeds = ol::evaluation_seeds(s);
         }
         if let Some(f) = self.frames {
             cfg.frames = cfg.ns.iter().map(|&n| (n, f.max(1))).collect();
@@ -725,10 +727,11 @@ struct StudyProtocol {
     /// Body counts of the table, comma separated (paper: 10,30,100,300,500; also 1000,10000,100000).
     #[arg(long, value_delimiter = ',')]
     n: Option<Vec<u32>>,
-    /// Frames per table run (paper: 5000).
+    /// Frames per table run (default 1,000; the paper: 5,000).
     #[arg(long)]
     frames: Option<u32>,
-    /// Number of seeds (1..=seeds); the 95% CIs are across seeds.
+    /// Number of seeds: the first S preregistered evaluation seeds, 201..=200+S (disjoint from the
+    /// calibration's); the 95% intervals are across seeds.
     #[arg(long)]
     seeds: Option<u64>,
     /// Interrupted budgets of the table as fractions of the exact narrow-phase cost.
@@ -808,7 +811,7 @@ impl StudyProtocol {
             c.frames = f;
         }
         if let Some(s) = self.seeds {
-            c.seeds = (1..=s).collect();
+            c.seeds = foveal_bench::open_loop::evaluation_seeds(s);
             if let Some(ol) = c.open_loop.as_mut() {
                 ol.seeds = c.seeds.clone();
             }
@@ -874,6 +877,19 @@ impl StudyProtocol {
     }
 }
 
+/// Write the study's `stamp.json` (commit, engine hash, fingerprint; see
+/// `foveal_bench::staleness`) with this invocation as the command that regenerates it.
+fn write_study_stamp(out: &std::path::Path) -> Result<()> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let command = format!("cargo run --release -p foveal-bench -- {}", args.join(" "));
+    let st = foveal_bench::staleness::write(out, &command).context("writing the study's stamp")?;
+    eprintln!(
+        "stamp: commit {}, engine {}, fingerprint {}",
+        st.commit, st.engine_hash, st.fingerprint
+    );
+    Ok(())
+}
+
 fn study(args: &StudyArgs) -> Result<()> {
     if let Some(file) = &args.session {
         return replay(file, &args.session_options);
@@ -907,6 +923,7 @@ fn study(args: &StudyArgs) -> Result<()> {
     for f in &out.files {
         println!("{}", f.display());
     }
+    write_study_stamp(&cfg.out)?;
     if !out.figures_with_text {
         eprintln!("note: no usable font was found; figures were drawn without text");
     }

@@ -37,13 +37,15 @@ use foveal_engine::{
     Simulation, Truth,
 };
 
+use crate::endpoint::{self, Endpoint};
 use crate::error::BenchError;
 use foveal_gaze::rng::SplitMix64;
 
 use crate::clock::InstantClock;
 use crate::gaze::ScriptedGaze;
 use crate::plots::{Figure, PAPER_P_RATIO, Series, panel};
-use crate::stats::MeanCi;
+use crate::ratio::{RatioCi, p_below};
+use crate::stats::{Interval, MeanCi};
 
 /// A scheduler under test: a kind and, for the priced one, its ablation switches.
 #[derive(Debug, Clone, PartialEq)]
@@ -186,8 +188,46 @@ pub struct OpenLoopConfig {
     pub fovea_first: bool,
     /// What "colliding" means in every run (`SceneConfig::truth`).
     pub truth: Truth,
+    /// The primary endpoints, one cell per claim, named before the run ([`crate::endpoint`]);
+    /// every other cell is secondary.
+    pub primary: Vec<Endpoint>,
     /// Output directory.
     pub out: PathBuf,
+}
+
+/// The study's claims and the cell that decides each (N = 500 is the paper's largest case;
+/// F2 with C = 5° its best-fitting model; a tenth of the exact narrow phase's time is the
+/// paper's 10 ms at N = 500 over its base case, about 1/16, rounded to a budget the protocol
+/// runs). Seeds of these runs are disjoint from the calibration's ([`EVALUATION_SEEDS`]).
+pub fn primary_endpoints(paper_n: u32, foveal_n: u32) -> Vec<Endpoint> {
+    vec![
+        Endpoint {
+            claim: "the paper: a priority queue around the fixation roughly halves the perceived \
+                    error (section 4, figure 6b)"
+                .into(),
+            n: paper_n,
+            condition: "C=5".into(),
+            budget: Budget::Wall(0.1),
+            scheduler: SchedulerKind::PriorityOnly.name().into(),
+        },
+        Endpoint {
+            claim: "foveal: the priced scheduler fed the gaze halves the perceived error".into(),
+            n: foveal_n,
+            condition: "C=5".into(),
+            budget: Budget::Wall(0.1),
+            scheduler: SchedulerKind::Priced.name().into(),
+        },
+    ]
+}
+
+/// Seeds of the evaluation runs, fixed before the run and disjoint from the seeds the priced
+/// scheduler's tables were fitted on (1-2) and held out on (101-102) ([`crate::calibrate`]).
+pub const EVALUATION_SEEDS: [u64; 5] = [201, 202, 203, 204, 205];
+
+/// The first `count` evaluation seeds (201, 202, ...: [`EVALUATION_SEEDS`] and on), what
+/// `--seeds COUNT` runs.
+pub fn evaluation_seeds(count: u64) -> Vec<u64> {
+    (0..count.max(1)).map(|i| EVALUATION_SEEDS[0] + i).collect()
 }
 
 /// F2 in degrees with fall-off constant `c`.
@@ -315,10 +355,13 @@ impl OpenLoopConfig {
             .map(Budget::Tests)
             .collect();
         budgets.extend([1.0 / 30.0, 0.1, 1.0 / 3.0].into_iter().map(Budget::Wall));
+        // N = 300 and 500 are the paper's largest cases, 10,000 foveal's; frames per run are
+        // chosen so that the default study fits 40 minutes on 2 cores (`docs/BENCHMARKS.md`):
+        // seeds, not frames, are the replicates.
         Self {
-            ns: vec![500, 10_000],
-            seeds: (1..=5).collect(),
-            frames: vec![(500, 1_000), (10_000, 200)],
+            ns: vec![300, 500, 10_000],
+            seeds: EVALUATION_SEEDS.to_vec(),
+            frames: vec![(300, 500), (500, 500), (10_000, 100)],
             warmup: 60,
             timing_frames: 30,
             budgets,
@@ -326,6 +369,7 @@ impl OpenLoopConfig {
             jobs: 1,
             fovea_first: false,
             truth: Truth::default(),
+            primary: primary_endpoints(500, 10_000),
             out: PathBuf::from("results/open-loop"),
         }
     }
@@ -385,8 +429,13 @@ impl OpenLoopConfig {
                 .map(Budget::Wall),
         );
         Self {
+            // At the paper's N only: the grid is exploratory, and at N = 10,000 it alone would
+            // take most of the study's time.
+            ns: vec![500],
             budgets,
             conditions,
+            // Exploratory: every cell of the grid is secondary.
+            primary: Vec::new(),
             out: PathBuf::from("results/open-loop-grid"),
             ..Self::standard()
         }
@@ -396,8 +445,9 @@ impl OpenLoopConfig {
     pub fn quick() -> Self {
         Self {
             ns: vec![500],
-            seeds: (1..=3).collect(),
+            seeds: EVALUATION_SEEDS[..3].to_vec(),
             frames: vec![(500, 60)],
+            primary: primary_endpoints(500, 500),
             warmup: 30,
             timing_frames: 10,
             out: PathBuf::from("results/open-loop-quick"),
@@ -575,7 +625,10 @@ struct ScheduleRun {
     feed: GazeFeed,
     /// Index into the union of the parts' budgets.
     budget: usize,
-    collider: Collider,
+    /// Its configuration (the collider is built for its budget's batch only).
+    sim: SimConfig,
+    /// Present while its budget's batch runs.
+    collider: Option<Collider>,
     /// The (part, condition, budget, scheduler) cells this run serves.
     cells: Vec<(usize, usize, usize, usize)>,
 }
@@ -691,12 +744,8 @@ pub fn run_frames_parts(
         audit: false,
         ..scene.clone()
     };
-    let mut source = Simulation::new(base.clone())?;
-    let dt = source.config().scene.dt;
+    let dt = base.scene.dt;
     let clock = InstantClock::new();
-    for _ in 0..cfg.warmup {
-        source.step(None, &FrozenClock);
-    }
     // The union of the parts' budgets, and each part's budgets in it.
     let mut budgets: Vec<Budget> = Vec::new();
     let budget_of: Vec<Vec<usize>> = parts
@@ -763,7 +812,8 @@ pub fn run_frames_parts(
                                 schedule_model: model,
                                 feed,
                                 budget: ub,
-                                collider: Collider::new(&sc, source.tree(), source.viewer())?,
+                                sim: sc,
+                                collider: None,
                                 cells: Vec::new(),
                             });
                             runs.len() - 1
@@ -781,46 +831,7 @@ pub fn run_frames_parts(
     let by_budget: Vec<Vec<usize>> = (0..budgets.len())
         .map(|ub| (0..runs.len()).filter(|&u| runs[u].budget == ub).collect())
         .collect();
-    // The wall-clock budgets' base (see BASE_WINDOW): an exact collider follows every frame, timed
-    // as the wall-clock cells are, the timing frames filling the window.
     let frames = cfg.frames_for(n);
-    let mut exact = Collider::new(&base, source.tree(), source.viewer())?;
-    let mut window = BaseWindow::default();
-    for _ in 0..cfg.timing_frames {
-        source.step(None, &FrozenClock);
-        window.push(time_exact(&mut exact, &source.frame_input(), &clock));
-    }
-    let mut bases = Vec::with_capacity(frames as usize);
-    let mut rates = Vec::with_capacity(frames as usize);
-    let mut base_ns = window.median();
-    let mut rate_ns = window.median_rate();
-    // Wall-clock runs first see the last timing frame, uncounted (gaze at the screen centre), as
-    // a server that has been running would have seen the frame before: they learn what their
-    // ordering costs here and keep that frame's witnesses. Sphere-test runs do not, so their rows
-    // replay bit for bit.
-    if cfg.timing_frames > 0 {
-        let input = source.frame_input();
-        for run in runs.iter_mut() {
-            let Budget::Wall(x) = budgets[run.budget] else {
-                continue;
-            };
-            let fb = FrameBudget::Wall((x * base_ns).round() as u64);
-            for _ in 0..foveal_engine::budget::LEARN_FRAMES {
-                let mut r = FrameReport::default();
-                let mut prof = PhaseProfile::default();
-                run.collider.warm();
-                run.collider.collide(
-                    &input,
-                    Some(Fixation::at(0.5, 0.5)),
-                    fb,
-                    &clock,
-                    &mut r,
-                    &mut prof,
-                );
-            }
-        }
-    }
-
     let mut cells: Vec<Vec<Vec<Vec<Cell>>>> = parts
         .iter()
         .map(|p| {
@@ -846,67 +857,128 @@ pub fn run_frames_parts(
     let mut items: Vec<Vec<(f64, u32)>> = vec![Vec::new(); models.len()];
     let mut run_tests = vec![0u64; runs.len()];
     let mut exact_tests = 0.0;
+    let mut bases = Vec::with_capacity(frames as usize);
+    let mut rates = Vec::with_capacity(frames as usize);
     let centre = Fixation::at(0.5, 0.5);
-    let viewer = *source.viewer();
-    let display = viewer.display;
-    let px_per_deg =
-        display.viewing_distance_cm * 1f64.to_radians().tan() / display.pixel_pitch_cm();
-    let mut noise = SplitMix64::new(seed ^ 0x0015_E5EE_D000_0000);
-    for f in 0..frames {
-        let t = f64::from(cfg.warmup + cfg.timing_frames + f) * dt;
-        let fixation = gaze(t);
-        let before = gaze(t - dt);
-        let in_saccade = display.visual_angle_deg(
-            viewer.to_pixels(fixation.x, fixation.y),
-            viewer.to_pixels(before.x, before.y),
-        ) > SACCADE_DEG_PER_S * dt;
-        let (g1, g2) = gaussian_pair(&mut noise);
-        let frame_tests = source.step(None, &FrozenClock).sphere_tests;
-        exact_tests += frame_tests as f64;
-        let input = source.frame_input();
-        if cfg.timing_frames > 0 {
-            window.push(time_exact(&mut exact, &input, &clock));
-            base_ns = window.median();
-            rate_ns = window.median_rate();
-            bases.push(base_ns);
-            rates.push(rate_ns);
+    // One batch per budget: the frames are replayed from the start for each (the exact run is
+    // deterministic, so every batch sees the same frames), and only that budget's colliders are
+    // alive at a time. Holding every budget's colliders at once took most of the study's memory
+    // (1.9 GB for one seed of N = 10,000); a budget's schedulers are compared with each other
+    // and its bound within one batch. The frame-level sums (exact tests, all-deemed P, counted
+    // frames) are taken in the first batch.
+    for (batch, here) in by_budget.iter().enumerate() {
+        let first = batch == 0;
+        let ub = batch;
+        let budget = budgets[ub];
+        let mut source = Simulation::new(base.clone())?;
+        for _ in 0..cfg.warmup {
+            source.step(None, &FrozenClock);
         }
-        clairvoyant::truths(input.tree, input.world, input.candidates, &mut truths);
-        let fix_px = input.viewer.to_pixels(fixation.x, fixation.y);
-        for (mi, model) in models.iter().enumerate() {
-            let view = FrameView {
-                viewer: input.viewer,
-                fixation_px: fix_px,
-                model: *model,
-                uncertainty_deg: 0.0,
-            };
-            let w = &mut weights[mi];
-            w.clear();
-            w.extend(truths.iter().map(|t| t.weight(&view)));
-            let it = &mut items[mi];
-            it.clear();
-            it.extend(w.iter().zip(&truths).map(|(&w, t)| (w, t.cost)));
-            clairvoyant::sort_for_bound(it);
+        for &u in here {
+            let c = Collider::new(&runs[u].sim, source.tree(), source.viewer())?;
+            runs[u].collider = Some(c);
         }
-        for (pi, p) in parts.iter().enumerate() {
-            for (ci, c) in p.conditions.iter().enumerate() {
-                let counts = !(c.suppress_saccades && in_saccade);
-                count[pi][ci] = counts;
-                if counts {
-                    counted[pi][ci] += 1;
-                    all_deemed[pi][ci] += weights[model_of[pi][ci]].iter().sum::<f64>();
+        // The wall-clock budgets' base (see BASE_WINDOW): an exact collider follows every frame,
+        // timed as the wall-clock cells are, the timing frames filling the window.
+        // A sphere-test batch after the first needs no base: its budgets do not read it.
+        let timed = cfg.timing_frames > 0 && (first || matches!(budget, Budget::Wall(_)));
+        let mut exact = Collider::new(&base, source.tree(), source.viewer())?;
+        let mut window = BaseWindow::default();
+        for _ in 0..cfg.timing_frames {
+            source.step(None, &FrozenClock);
+            if timed {
+                window.push(time_exact(&mut exact, &source.frame_input(), &clock));
+            }
+        }
+        let mut base_ns = window.median();
+        let mut rate_ns = window.median_rate();
+        // Wall-clock runs first see the last timing frame, uncounted (gaze at the screen centre),
+        // as a server that has been running would have seen the frame before: they learn what
+        // their ordering costs here and keep that frame's witnesses. Sphere-test runs do not, so
+        // their rows replay bit for bit.
+        if let (Budget::Wall(x), true) = (budget, cfg.timing_frames > 0) {
+            let input = source.frame_input();
+            let fb = FrameBudget::Wall((x * base_ns).round() as u64);
+            for &u in here {
+                let Some(collider) = runs[u].collider.as_mut() else {
+                    continue;
+                };
+                for _ in 0..foveal_engine::budget::LEARN_FRAMES {
+                    let mut r = FrameReport::default();
+                    let mut prof = PhaseProfile::default();
+                    collider.warm();
+                    collider.collide(
+                        &input,
+                        Some(Fixation::at(0.5, 0.5)),
+                        fb,
+                        &clock,
+                        &mut r,
+                        &mut prof,
+                    );
                 }
             }
         }
-        let shifted = |dx_deg: f64, dy_deg: f64| {
-            let (w, h) = (f64::from(display.width_px), f64::from(display.height_px));
-            Fixation::at(
-                (fixation.x + dx_deg * px_per_deg / w).clamp(0.0, 1.0),
-                (fixation.y + dy_deg * px_per_deg / h).clamp(0.0, 1.0),
-            )
-        };
-        for (ub, budget) in budgets.iter().enumerate() {
-            let fb = match *budget {
+        let viewer = *source.viewer();
+        let display = viewer.display;
+        let px_per_deg =
+            display.viewing_distance_cm * 1f64.to_radians().tan() / display.pixel_pitch_cm();
+        let mut noise = SplitMix64::new(seed ^ 0x0015_E5EE_D000_0000);
+        for f in 0..frames {
+            let t = f64::from(cfg.warmup + cfg.timing_frames + f) * dt;
+            let fixation = gaze(t);
+            let before = gaze(t - dt);
+            let in_saccade = display.visual_angle_deg(
+                viewer.to_pixels(fixation.x, fixation.y),
+                viewer.to_pixels(before.x, before.y),
+            ) > SACCADE_DEG_PER_S * dt;
+            let (g1, g2) = gaussian_pair(&mut noise);
+            let frame_tests = source.step(None, &FrozenClock).sphere_tests;
+            if first {
+                exact_tests += frame_tests as f64;
+            }
+            let input = source.frame_input();
+            if timed {
+                window.push(time_exact(&mut exact, &input, &clock));
+                base_ns = window.median();
+                rate_ns = window.median_rate();
+                bases.push(base_ns);
+                rates.push(rate_ns);
+            }
+            clairvoyant::truths(input.tree, input.world, input.candidates, &mut truths);
+            let fix_px = input.viewer.to_pixels(fixation.x, fixation.y);
+            for (mi, model) in models.iter().enumerate() {
+                let view = FrameView {
+                    viewer: input.viewer,
+                    fixation_px: fix_px,
+                    model: *model,
+                    uncertainty_deg: 0.0,
+                };
+                let w = &mut weights[mi];
+                w.clear();
+                w.extend(truths.iter().map(|t| t.weight(&view)));
+                let it = &mut items[mi];
+                it.clear();
+                it.extend(w.iter().zip(&truths).map(|(&w, t)| (w, t.cost)));
+                clairvoyant::sort_for_bound(it);
+            }
+            for (pi, p) in parts.iter().enumerate() {
+                for (ci, c) in p.conditions.iter().enumerate() {
+                    let counts = !(c.suppress_saccades && in_saccade);
+                    count[pi][ci] = counts;
+                    if counts && first {
+                        counted[pi][ci] += 1;
+                        all_deemed[pi][ci] += weights[model_of[pi][ci]].iter().sum::<f64>();
+                    }
+                }
+            }
+            let shifted = |dx_deg: f64, dy_deg: f64| {
+                let (w, h) = (f64::from(display.width_px), f64::from(display.height_px));
+                Fixation::at(
+                    (fixation.x + dx_deg * px_per_deg / w).clamp(0.0, 1.0),
+                    (fixation.y + dy_deg * px_per_deg / h).clamp(0.0, 1.0),
+                )
+            };
+            let fb = match budget {
                 Budget::Tests(x) => FrameBudget::Tests((x * frame_tests as f64).round() as u64),
                 Budget::FixedTests(k) => FrameBudget::Tests(k),
                 Budget::Wall(x) => FrameBudget::Wall((x * base_ns).round() as u64),
@@ -915,7 +987,6 @@ pub fn run_frames_parts(
                 Budget::Tests(_) | Budget::FixedTests(_) => &FrozenClock,
                 Budget::Wall(_) => &clock,
             };
-            let here = &by_budget[ub];
             for j in 0..here.len() {
                 // Rotate the order so no scheduler always runs first into cold caches.
                 let u = here[(j + f as usize) % here.len()];
@@ -927,23 +998,24 @@ pub fn run_frames_parts(
                     GazeFeed::Noise { sd_deg } => shifted(sd_deg * g1, sd_deg * g2),
                     GazeFeed::Latency { ms } => gaze((t - ms * 1e-3).max(0.0)),
                 };
+                let Some(collider) = run.collider.as_mut() else {
+                    continue;
+                };
                 let mut r = FrameReport::default();
                 let mut prof = PhaseProfile::default();
                 if matches!(budget, Budget::Wall(_)) {
                     // A server runs one collider, whose buffers and frame stay cached between
                     // frames; here dozens take turns, so bring this one's back before timing it.
-                    run.collider.warm();
+                    collider.warm();
                     warm_frame(&input);
                 }
-                run.collider
-                    .collide(&input, Some(fed), fb, clk, &mut r, &mut prof);
+                collider.collide(&input, Some(fed), fb, clk, &mut r, &mut prof);
                 run_tests[u] = r.sphere_tests;
                 for &(pi, ci, bi, si) in &run.cells {
                     if !count[pi][ci] {
                         continue;
                     }
-                    let tp: f64 = run
-                        .collider
+                    let tp: f64 = collider
                         .pairs()
                         .iter()
                         .zip(&weights[model_of[pi][ci]])
@@ -958,25 +1030,28 @@ pub fn run_frames_parts(
                     cell.prioritise_ms += prof.prioritise_ns as f64 * 1e-6;
                 }
             }
-        }
-        for (pi, p) in parts.iter().enumerate() {
-            for ci in 0..p.conditions.len() {
-                if !count[pi][ci] {
-                    continue;
-                }
-                for bi in 0..p.budgets.len() {
-                    let used = run_of[pi][ci][bi]
-                        .iter()
-                        .map(|&u| run_tests[u])
-                        .max()
-                        .unwrap_or(0);
-                    let max_tests =
-                        bound_tests_of(&p.budgets[bi], frame_tests, base_ns, rate_ns, used);
-                    bound_tests[pi][ci][bi] += max_tests as f64;
-                    bound[pi][ci][bi] +=
-                        clairvoyant::bound_sorted(&items[model_of[pi][ci]], max_tests);
+            for (pi, p) in parts.iter().enumerate() {
+                for ci in 0..p.conditions.len() {
+                    if !count[pi][ci] {
+                        continue;
+                    }
+                    for bi in (0..p.budgets.len()).filter(|&bi| budget_of[pi][bi] == ub) {
+                        let used = run_of[pi][ci][bi]
+                            .iter()
+                            .map(|&u| run_tests[u])
+                            .max()
+                            .unwrap_or(0);
+                        let max_tests =
+                            bound_tests_of(&p.budgets[bi], frame_tests, base_ns, rate_ns, used);
+                        bound_tests[pi][ci][bi] += max_tests as f64;
+                        bound[pi][ci][bi] +=
+                            clairvoyant::bound_sorted(&items[model_of[pi][ci]], max_tests);
+                    }
                 }
             }
+        }
+        for &u in here {
+            runs[u].collider = None;
         }
     }
     bases.sort_unstable_by(f64::total_cmp);
@@ -1139,14 +1214,20 @@ pub struct SummaryRow {
     pub scheduler: String,
     /// Mean true P per frame.
     pub true_p: MeanCi,
-    /// True P over round-robin's, paired by seed.
-    pub ratio_rr: MeanCi,
-    /// Share of the achievable reduction, (P_rr - P_s) / (P_rr - P_bound), paired by seed.
-    pub share: MeanCi,
+    /// Mean true P over round-robin's, paired by seed ([`RatioCi`]).
+    pub ratio_rr: RatioCi,
+    /// Share of the achievable reduction, Σ(P_rr - P_s) / Σ(P_rr - P_bound), paired by seed.
+    pub share: RatioCi,
     /// Sphere tests per frame over round-robin's, paired by seed.
-    pub tests_rr: MeanCi,
+    pub tests_rr: RatioCi,
     /// Mean prioritisation time per frame (ms).
     pub prioritise_ms: MeanCi,
+    /// One-sided p-value of "true P is below half of round-robin's" (the paper's "roughly
+    /// halves"), before any correction ([`crate::ratio::p_below`]); `None` where it cannot be
+    /// computed (a seed with zero P, fewer than two seeds).
+    pub p_halves: Option<f64>,
+    /// One-sided p-value of "true P is below round-robin's".
+    pub p_below_rr: Option<f64>,
 }
 
 /// Summaries across seeds for every (N, condition, budget, scheduler), with a `clairvoyant` row.
@@ -1166,19 +1247,22 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
                                 p: &dyn Fn(&RunResult) -> f64,
                                 t: &dyn Fn(&RunResult) -> f64,
                                 pm: &dyn Fn(&RunResult) -> f64| {
+                    let pairs: Vec<(f64, f64)> = rs.iter().map(|r| (p(r), p_rr(r))).collect();
                     rows.push(SummaryRow {
                         n,
                         condition: cond.name.clone(),
                         budget: b.label(),
                         scheduler: label.into(),
                         true_p: MeanCi::of(rs.iter().map(|r| p(r))),
-                        ratio_rr: MeanCi::of(rs.iter().map(|r| p(r) / p_rr(r))),
-                        share: MeanCi::of(
+                        ratio_rr: RatioCi::of(pairs.iter().copied()),
+                        share: RatioCi::of(
                             rs.iter()
-                                .map(|r| (p_rr(r) - p(r)) / (p_rr(r) - r.bound[ci][bi])),
+                                .map(|r| (p_rr(r) - p(r), p_rr(r) - r.bound[ci][bi])),
                         ),
-                        tests_rr: MeanCi::of(rs.iter().map(|r| t(r) / t_rr(r))),
+                        tests_rr: RatioCi::of(rs.iter().map(|r| (t(r), t_rr(r)))),
                         prioritise_ms: MeanCi::of(rs.iter().map(|r| pm(r))),
+                        p_halves: p_below(&pairs, PAPER_P_RATIO),
+                        p_below_rr: p_below(&pairs, 1.0),
                     });
                 };
                 for (j, s) in cond.schedulers.iter().enumerate() {
@@ -1245,28 +1329,40 @@ pub fn runs_csv(cfg: &OpenLoopConfig, runs: &[RunResult]) -> String {
     s
 }
 
-/// CSV of the summary rows.
-pub fn summary_csv(rows: &[SummaryRow]) -> String {
+/// CSV of the summary rows: every ratio with its bootstrap interval and the seeds it counted, the
+/// halving test's p-value before and (for secondary cells) after Holm's correction, and whether
+/// the cell is a primary endpoint.
+pub fn summary_csv(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
+    let adjusted = endpoint::secondary_halving(rows, &cfg.primary);
     let mut s = String::from(
-        "n,condition,budget,scheduler,true_p,true_p_ci,ratio_rr,ratio_rr_ci,share,share_ci,tests_rr,tests_rr_ci,prioritise_ms\n",
+        "n,condition,budget,scheduler,seeds,non_finite,true_p,true_p_ci,ratio_rr,ratio_rr_lo,ratio_rr_hi,share,share_lo,share_hi,tests_rr,tests_rr_lo,tests_rr_hi,prioritise_ms,p_halves,p_halves_holm,primary\n",
     );
-    for r in rows {
+    let p = |x: Option<f64>| x.map_or(String::new(), |p| format!("{p:.4e}"));
+    for (i, r) in rows.iter().enumerate() {
         let _ = writeln!(
             s,
-            "{},\"{}\",{},{},{:.6e},{:.3e},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.5}",
+            "{},\"{}\",{},{},{},{},{:.6e},{:.3e},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.5},{},{},{}",
             r.n,
             r.condition,
             r.budget,
             r.scheduler,
+            r.ratio_rr.n,
+            r.ratio_rr.non_finite,
             r.true_p.mean,
             r.true_p.half,
-            r.ratio_rr.mean,
-            r.ratio_rr.half,
-            r.share.mean,
-            r.share.half,
-            r.tests_rr.mean,
-            r.tests_rr.half,
+            r.ratio_rr.ratio,
+            r.ratio_rr.lo,
+            r.ratio_rr.hi,
+            r.share.ratio,
+            r.share.lo,
+            r.share.hi,
+            r.tests_rr.ratio,
+            r.tests_rr.lo,
+            r.tests_rr.hi,
             r.prioritise_ms.mean,
+            p(r.p_halves),
+            p(adjusted[i]),
+            cfg.primary.iter().any(|e| e.is(r)),
         );
     }
     s
@@ -1355,18 +1451,21 @@ pub fn write_parts(
         } else {
             String::new()
         };
+        let stamp = crate::stamp::current();
         let report = format!(
-            "{}\nLoad average at start: {}; at end: {}; wall time {:.0} s{shared}.\n",
+            "{}\nLoad average at start: {}; at end: {}; wall time {:.0} s{shared}. Generated by \
+             {}.\n",
             markdown(cfg, runs, &rows),
             load_start,
             load_end,
-            wall_s
+            wall_s,
+            stamp.line()
         );
         std::fs::create_dir_all(&cfg.out).map_err(|e| BenchError::io(&cfg.out, e))?;
         let mut files = Vec::new();
         for (name, text) in [
-            ("open_loop_runs.csv", runs_csv(cfg, runs)),
-            ("open_loop_summary.csv", summary_csv(&rows)),
+            ("open_loop_runs.csv", stamp.csv(&runs_csv(cfg, runs))),
+            ("open_loop_summary.csv", stamp.csv(&summary_csv(cfg, &rows))),
             ("open_loop_report.md", report.clone()),
         ] {
             let path = cfg.out.join(name);
@@ -1399,10 +1498,13 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
     );
     let _ = writeln!(
         s,
-        "Cells: true P over round-robin's, paired by seed, mean ± 95% CI half-width; in brackets the \
-         share of the achievable reduction (P_rr - P_s) / (P_rr - P_clairvoyant). Wall-clock \
-         columns add the sphere tests done relative to round-robin's.\n"
+        "Cells: mean true P over round-robin's on the same frames, paired by seed, with its 95% \
+         bootstrap interval over seeds in brackets; after the slash the share of the achievable \
+         reduction Σ(P_rr - P_s) / Σ(P_rr - P_clairvoyant), same form. Wall-clock columns add \
+         the sphere tests done over round-robin's. n (seeds) is in each heading; a cell that \
+         counted fewer says so.\n"
     );
+    s.push_str(&endpoint::markdown(&cfg.primary, rows));
     for &n in &cfg.ns {
         let rs: Vec<&RunResult> = runs.iter().filter(|r| r.n == n).collect();
         let narrow = MeanCi::of(rs.iter().map(|r| r.exact_narrow_ms));
@@ -1480,9 +1582,9 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
                         s.push_str(" |");
                         continue;
                     };
-                    let mut cell = format!(" {} [{}]", r.ratio_rr.fmt(2), r.share.fmt(2));
-                    if matches!(b, Budget::Wall(_)) && r.tests_rr.mean.is_finite() {
-                        let _ = write!(cell, " tests {}", r.tests_rr.fmt(2));
+                    let mut cell = format!(" {} / {}", r.ratio_rr.fmt_cell(2), r.share.fmt_cell(2));
+                    if matches!(b, Budget::Wall(_)) && r.tests_rr.ratio.is_finite() {
+                        let _ = write!(cell, "; tests {}", r.tests_rr.fmt_cell(2));
                     }
                     let _ = write!(s, "{cell} |");
                 }
@@ -1495,13 +1597,33 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
     s
 }
 
-/// Where each scheduler halves round-robin's true P: per N and scheduler, the conditions and
-/// budgets at which the paired ratio's 95% CI lies below 0.5 (the paper's "roughly halves"),
-/// marked `yes`; `mean` where only the mean does.
+/// Where each scheduler halves round-robin's true P, as secondary findings: per N and scheduler,
+/// each condition and budget marked `yes` where "true P below half of round-robin's" holds after
+/// Holm's correction over every secondary cell of the report (α = 0.05), `ci` where only the
+/// uncorrected bootstrap interval lies below one half, `mean` where only the estimate does;
+/// the primary endpoints' cells are marked `primary` (tested alone, above).
 pub fn halving_markdown(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
-    let mut s = String::from(
-        "### Where each scheduler halves round-robin's true P\n\n`yes`: the paired ratio's 95% CI \
-         lies below 0.5; `mean`: only its mean does; blank: not halved.\n\n",
+    let adjusted = endpoint::secondary_halving(rows, &cfg.primary);
+    let family = adjusted.iter().flatten().count();
+    let held = adjusted
+        .iter()
+        .flatten()
+        .filter(|&&p| p <= endpoint::ALPHA)
+        .count();
+    let untestable = rows
+        .iter()
+        .filter(|r| r.scheduler != "round-robin" && r.scheduler != "clairvoyant")
+        .filter(|r| r.p_halves.is_none())
+        .count();
+    let mut s = format!(
+        "### Where each scheduler halves round-robin's true P (secondary)\n\n`yes`: \"true P below \
+         half of round-robin's\" holds after Holm's correction over all {family} secondary cells \
+         of this report (one-sided t on per-seed log ratios, α = {}); it holds in {held} of them. \
+         `ci`: only the uncorrected 95% bootstrap interval lies below 0.5; `mean`: only the \
+         estimate does; blank: not halved; `primary`: a primary endpoint, tested alone above. \
+         {untestable} cells could not be tested (a seed with zero P) and are left out of the \
+         family.\n\n",
+        endpoint::ALPHA
     );
     for &n in &cfg.ns {
         let mut labels: Vec<&str> = Vec::new();
@@ -1529,16 +1651,21 @@ pub fn halving_markdown(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
                 for b in &cfg.budgets {
                     let cell = rows
                         .iter()
-                        .find(|r| {
+                        .enumerate()
+                        .find(|(_, r)| {
                             r.n == n
                                 && r.condition == c.name
                                 && r.budget == b.label()
                                 && r.scheduler == label
                         })
-                        .map_or("", |r| {
-                            if r.ratio_rr.hi() < 0.5 {
+                        .map_or("", |(i, r)| {
+                            if cfg.primary.iter().any(|e| e.is(r)) {
+                                "primary"
+                            } else if adjusted[i].is_some_and(|p| p <= endpoint::ALPHA) {
                                 "yes"
-                            } else if r.ratio_rr.mean < 0.5 {
+                            } else if r.ratio_rr.hi < PAPER_P_RATIO {
+                                "ci"
+                            } else if r.ratio_rr.ratio < PAPER_P_RATIO {
                                 "mean"
                             } else {
                                 ""
@@ -1561,28 +1688,28 @@ pub fn halving_markdown(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
 /// the screen-centre control of the same model (no eye tracker) is dashed.
 pub fn open_loop_figures(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> Vec<(String, Figure)> {
     let mut out = Vec::new();
-    let series = |n: u32, cond: &str, label: &str, wall: bool, value: fn(&SummaryRow) -> MeanCi| {
-        let points: Vec<(f64, MeanCi)> = cfg
-            .budgets
-            .iter()
-            .filter_map(|b| match (*b, wall) {
-                (Budget::Tests(x), false) | (Budget::Wall(x), true) => Some((x, b.label())),
-                _ => None,
-            })
-            .filter_map(|(x, label_b)| {
-                rows.iter()
-                    .find(|r| {
-                        r.n == n
-                            && r.condition == cond
-                            && r.budget == label_b
-                            && r.scheduler == label
-                    })
-                    .map(|r| (x, value(r)))
-                    .filter(|(_, v)| v.mean.is_finite())
-            })
-            .collect();
-        points
-    };
+    let series =
+        |n: u32, cond: &str, label: &str, wall: bool, value: fn(&SummaryRow) -> RatioCi| {
+            let points: Vec<(f64, Interval)> = cfg
+                .budgets
+                .iter()
+                .filter_map(|b| match (*b, wall) {
+                    (Budget::Tests(x), false) | (Budget::Wall(x), true) => Some((x, b.label())),
+                    _ => None,
+                })
+                .filter_map(|(x, label_b)| {
+                    rows.iter()
+                        .find(|r| {
+                            r.n == n
+                                && r.condition == cond
+                                && r.budget == label_b
+                                && r.scheduler == label
+                        })
+                        .map(|r| (x, value(r).interval()))
+                })
+                .collect();
+            points
+        };
     for &n in &cfg.ns {
         for cond in cfg
             .conditions
@@ -1607,8 +1734,8 @@ pub fn open_loop_figures(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> Vec<(Stri
                 .map(|s| s.label.as_str())
                 .collect();
             let mut panels = Vec::new();
-            let share_of: fn(&SummaryRow) -> MeanCi = |r| r.share;
-            let ratio_of: fn(&SummaryRow) -> MeanCi = |r| r.ratio_rr;
+            let share_of: fn(&SummaryRow) -> RatioCi = |r| r.share;
+            let ratio_of: fn(&SummaryRow) -> RatioCi = |r| r.ratio_rr;
             for (title, y_label, wall, share) in [
                 (
                     "Share of the achievable reduction, sphere-test budgets",
@@ -1702,7 +1829,17 @@ pub fn open_loop_figures(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> Vec<(Stri
                     }
                 })
                 .collect();
-            out.push((format!("open_loop_n{n}_{tag}"), Figure { panels }));
+            let caption = format!(
+                "Open loop, N = {n}, {}: every scheduler on the same frames of one exact run per \
+                 seed. Points: over {} seeds x {} frames, the ratio of mean true P to round-robin's \
+                 (or the share of the reduction the clairvoyant bound achieves); bars: 95% \
+                 percentile-bootstrap intervals over seeds. Dashed: the same scheduler told the \
+                 screen centre (no eye tracker).",
+                cond.name,
+                cfg.seeds.len(),
+                cfg.frames_for(n)
+            );
+            out.push((format!("open_loop_n{n}_{tag}"), Figure { panels, caption }));
         }
     }
     out
@@ -1748,7 +1885,7 @@ mod tests {
             .iter()
             .find(|r| r.scheduler == "round-robin")
             .expect("round-robin row");
-        assert!((rr.ratio_rr.mean - 1.0).abs() < 1e-12 && rr.share.mean.abs() < 1e-12);
+        assert!((rr.ratio_rr.ratio - 1.0).abs() < 1e-12 && rr.share.ratio.abs() < 1e-12);
         assert!(rows.iter().any(|r| r.scheduler == "clairvoyant"));
         let md = markdown(&cfg, &runs, &rows);
         assert!(md.contains("| priced |") && md.contains("| clairvoyant |"));
@@ -1870,14 +2007,21 @@ mod tests {
         let runs = run(&cfg).expect("runs");
         let rows = summarise(&cfg, &runs);
         let md = halving_markdown(&cfg, &rows);
-        for r in rows.iter().filter(|r| r.scheduler == "priced") {
+        let adjusted = endpoint::secondary_halving(&rows, &cfg.primary);
+        for (i, r) in rows
+            .iter()
+            .enumerate()
+            .filter(|(_, r)| r.scheduler == "priced")
+        {
             let line = md
                 .lines()
                 .skip_while(|l| !l.contains("N = 150, priced"))
                 .find(|l| l.starts_with(&format!("| {} |", r.condition)))
                 .expect("row");
-            let halved = r.ratio_rr.hi() < 0.5;
-            assert_eq!(line.contains("yes"), halved, "{line} vs {:?}", r.ratio_rr);
+            let held = adjusted[i].is_some_and(|p| p <= endpoint::ALPHA);
+            assert_eq!(line.contains("yes"), held, "{line} vs {:?}", r.ratio_rr);
+            let ci_only = !held && r.ratio_rr.hi < 0.5;
+            assert_eq!(line.contains("ci"), ci_only, "{line} vs {:?}", r.ratio_rr);
         }
     }
 

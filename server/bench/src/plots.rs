@@ -1,4 +1,11 @@
-//! Figures as SVG and PNG (plotters): line charts of means across seeds with 95% CI error bars.
+//! Figures as SVG and PNG (plotters): line charts of estimates across seeds with their 95%
+//! intervals as error bars, a caption under the panels that says what is plotted, n and what the
+//! bars are, and the commit and engine that drew it ([`crate::stamp`]).
+//!
+//! On a log axis an interval end at or below zero is drawn to the axis' floor (the bar stays
+//! two-sided and says it reaches zero), a value of zero as an open triangle on the floor, and a
+//! line is broken where a point cannot be drawn, never bridged across it. Each scheduler has one
+//! colour in every figure ([`SCHEDULER_COLOURS`]).
 //!
 //! Log axes are drawn by plotting log10 of the values on a linear axis and labelling ticks with the
 //! original values, so one code path serves both; the ticks are where a reader needs them, not
@@ -17,15 +24,15 @@ use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::prelude::*;
 
 use crate::error::BenchError;
-use crate::stats::MeanCi;
+use crate::stats::Interval;
 
-/// One line: points (x, mean ± CI).
+/// One line: points (x, estimate with its interval).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Series {
     /// Legend entry.
     pub name: String,
     /// Points in x order.
-    pub points: Vec<(f64, MeanCi)>,
+    pub points: Vec<(f64, Interval)>,
     /// Drawn dashed (an estimate beside its audited value).
     pub dashed: bool,
 }
@@ -54,6 +61,9 @@ pub struct Panel {
 pub struct Figure {
     /// Panels, left to right.
     pub panels: Vec<Panel>,
+    /// What is plotted, over how many replicates, and what the bars are: drawn under the panels
+    /// (wrapped), with the stamp of what drew it after it.
+    pub caption: String,
 }
 
 /// Files written for a figure.
@@ -72,7 +82,10 @@ const PANEL_H: u32 = 480;
 /// Width of the legend column to the right of each chart.
 const LEGEND_W: u32 = 200;
 
-const COLORS: [RGBColor; 8] = [
+/// Height of the caption's area under the panels.
+const CAPTION_H: u32 = 96;
+
+const COLORS: [RGBColor; 12] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
@@ -81,6 +94,25 @@ const COLORS: [RGBColor; 8] = [
     RGBColor(140, 86, 75),
     RGBColor(227, 119, 194),
     RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(23, 190, 207),
+    RGBColor(0, 0, 0),
+    RGBColor(174, 199, 232),
+];
+
+/// Series names that keep one colour (an index into the palette) in every figure: the
+/// schedulers, the bound and the exact frame. Any other name takes the next colour after these.
+pub const SCHEDULER_COLOURS: [&str; 10] = [
+    "round-robin",
+    "priority-only",
+    "priority-sorted",
+    "expected-gain",
+    "priced",
+    "sequential",
+    "sorted-sequential",
+    "exact",
+    "clairvoyant bound",
+    "priced-no-gaze",
 ];
 
 fn tx(v: f64, log: bool) -> Option<f64> {
@@ -210,22 +242,39 @@ fn minor(lo: f64, hi: f64, log: bool) -> Vec<f64> {
     t
 }
 
-/// Transformed points of a series: (x, y, y_lo, y_hi).
-fn points(s: &Series, p: &Panel) -> Vec<(f64, f64, f64, f64)> {
+/// A point as drawn: (x, y, y_lo, y_hi) in the axes' coordinates.
+type Drawn = (f64, f64, f64, f64);
+
+/// Transformed points of a series: (x, y, y_lo, y_hi) where the point can be drawn, `None` where
+/// it cannot (its value is not finite, or not positive on a log axis), so that a line breaks
+/// there. On a log axis an interval end at or below zero becomes `floor` (the axis' bottom).
+fn points(s: &Series, p: &Panel, floor: f64) -> Vec<Option<Drawn>> {
     s.points
         .iter()
-        .filter_map(|(x, c)| {
+        .map(|(x, c)| {
             let x = tx(*x, p.log_x)?;
-            let y = tx(c.mean, p.log_y)?;
-            let (lo, hi) = if c.half.is_finite() {
-                let lo = tx(c.lo(), p.log_y).unwrap_or(y);
-                let hi = tx(c.hi(), p.log_y).unwrap_or(y);
-                (lo, hi)
-            } else {
-                (y, y)
+            let y = tx(c.value, p.log_y)?;
+            let end = |v: f64| {
+                if v.is_nan() {
+                    y
+                } else {
+                    tx(v, p.log_y).unwrap_or(floor)
+                }
             };
-            Some((x, y, lo, hi))
+            Some((x, y, end(c.lo).min(y), end(c.hi).max(y)))
         })
+        .collect()
+}
+
+/// The x of every point whose value is exactly zero on a log y: drawn on the floor, not dropped.
+fn zeros(s: &Series, p: &Panel) -> Vec<f64> {
+    if !p.log_y {
+        return Vec::new();
+    }
+    s.points
+        .iter()
+        .filter(|(_, c)| c.value == 0.0)
+        .filter_map(|(x, _)| tx(*x, p.log_x))
         .collect()
 }
 
@@ -255,7 +304,14 @@ fn draw_panel<DB: DrawingBackend>(
     text: bool,
 ) -> Result<(), String> {
     let (plot_area, legend_area) = area.split_horizontally(PANEL_W - LEGEND_W);
-    let pts: Vec<Vec<(f64, f64, f64, f64)>> = p.series.iter().map(|s| points(s, p)).collect();
+    // Interval ends below a log axis are marked -inf first and put on the floor once the range
+    // is known.
+    let raw: Vec<Vec<Option<Drawn>>> = p
+        .series
+        .iter()
+        .map(|s| points(s, p, f64::NEG_INFINITY))
+        .collect();
+    let zero_xs: Vec<Vec<f64>> = p.series.iter().map(|s| zeros(s, p)).collect();
     let tested: Vec<f64> = {
         let mut v: Vec<f64> = p
             .series
@@ -271,14 +327,33 @@ fn draw_panel<DB: DrawingBackend>(
         .iter()
         .filter_map(|(y, l)| tx(*y, p.log_y).map(|t| (t, l.as_str())))
         .collect();
-    let (x0, x1) = range(pts.iter().flatten().map(|q| q.0), p.log_x);
-    let (y0, y1) = range(
-        pts.iter()
-            .flatten()
+    let drawn = || raw.iter().flatten().flatten();
+    let (x0, x1) = range(
+        drawn()
+            .map(|q| q.0)
+            .chain(zero_xs.iter().flatten().copied()),
+        p.log_x,
+    );
+    let (mut y0, y1) = range(
+        drawn()
             .flat_map(|q| [q.1, q.2, q.3])
+            .filter(|v| v.is_finite())
             .chain(refs.iter().map(|r| r.0)),
         p.log_y,
     );
+    let floored = drawn().any(|q| q.2 == f64::NEG_INFINITY);
+    if p.log_y && (floored || zero_xs.iter().any(|z| !z.is_empty())) {
+        // Room under the lowest value for the floor's marks.
+        y0 -= 0.1 * (y1 - y0);
+    }
+    let pts: Vec<Vec<Option<Drawn>>> = raw
+        .iter()
+        .map(|v| {
+            v.iter()
+                .map(|q| q.map(|(x, y, lo, hi)| (x, y, lo.max(y0), hi)))
+                .collect()
+        })
+        .collect();
     let (xt, xm) = ticks(x0, x1, p.log_x, &tested);
     let (yt, ym) = ticks(y0, y1, p.log_y, &[]);
     let mut b = ChartBuilder::on(&plot_area);
@@ -342,25 +417,36 @@ fn draw_panel<DB: DrawingBackend>(
     for (i, q) in pts.iter().enumerate() {
         let s = &p.series[i];
         let color = color_of(palette, s);
-        let style = ShapeStyle::from(&color).stroke_width(2);
-        let line = q.iter().map(|q| (q.0, q.1));
-        if s.dashed {
-            chart
-                .draw_series(DashedLineSeries::new(line, 9, 6, style))
-                .map_err(|e| e.to_string())?;
-        } else {
-            chart
-                .draw_series(LineSeries::new(line, style))
-                .map_err(|e| e.to_string())?;
+        let style = ShapeStyle::from(&color).stroke_width(3);
+        // One line per run of drawable points: a gap stays a gap.
+        for run in q.split(Option::is_none) {
+            let line = run.iter().flatten().map(|q| (q.0, q.1));
+            if s.dashed {
+                chart
+                    .draw_series(DashedLineSeries::new(line, 9, 6, style))
+                    .map_err(|e| e.to_string())?;
+            } else {
+                chart
+                    .draw_series(LineSeries::new(line, style))
+                    .map_err(|e| e.to_string())?;
+            }
         }
+        let q: Vec<(f64, f64, f64, f64)> = q.iter().flatten().copied().collect();
         chart
-            .draw_series(q.iter().map(|q| Circle::new((q.0, q.1), 3, color.filled())))
+            .draw_series(q.iter().map(|q| Circle::new((q.0, q.1), 4, color.filled())))
             .map_err(|e| e.to_string())?;
         chart
             .draw_series(
                 q.iter()
                     .filter(|q| q.3 > q.2)
-                    .map(|q| PathElement::new(vec![(q.0, q.2), (q.0, q.3)], color)),
+                    .map(|q| PathElement::new(vec![(q.0, q.2), (q.0, q.3)], color.stroke_width(2))),
+            )
+            .map_err(|e| e.to_string())?;
+        chart
+            .draw_series(
+                zero_xs[i]
+                    .iter()
+                    .map(|&x| TriangleMarker::new((x, y0), 7, color.stroke_width(2))),
             )
             .map_err(|e| e.to_string())?;
     }
@@ -378,12 +464,14 @@ fn base_name(s: &Series) -> &str {
         .trim_end_matches(", estimate")
         .trim_end_matches(", true")
         .trim_end_matches(", centre-fed")
+        .trim_end_matches(", gaze")
+        .trim_end_matches(", screen centre")
 }
 
-/// Base names of a figure's series in order of first appearance: one colour each, the same in
-/// every panel of the figure.
+/// Base names with a colour each: the schedulers' fixed ones ([`SCHEDULER_COLOURS`]), then any
+/// other of the figure's series in order of first appearance; the same in every panel.
 fn palette(fig: &Figure) -> Vec<String> {
-    let mut names: Vec<String> = Vec::new();
+    let mut names: Vec<String> = SCHEDULER_COLOURS.iter().map(|s| s.to_string()).collect();
     for s in fig.panels.iter().flat_map(|p| &p.series) {
         let b = base_name(s);
         if !names.iter().any(|n| n == b) {
@@ -436,12 +524,56 @@ fn draw<DB: DrawingBackend>(
     text: bool,
 ) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
-    let areas = root.split_evenly((1, fig.panels.len().max(1)));
+    let (panels, foot) = root.split_vertically(PANEL_H);
+    let areas = panels.split_evenly((1, fig.panels.len().max(1)));
     let palette = palette(fig);
     for (a, p) in areas.iter().zip(&fig.panels) {
         draw_panel(a, p, &palette, text)?;
     }
+    if text {
+        let width = (PANEL_W * fig.panels.len().max(1) as u32) as usize;
+        let font = ("sans-serif", 13).into_font();
+        for (i, line) in caption_lines(fig, width / 7).iter().enumerate() {
+            foot.draw(&Text::new(
+                line.clone(),
+                (12, 4 + 16 * i as i32),
+                font.clone(),
+            ))
+            .map_err(|e| e.to_string())?;
+        }
+    }
     root.present().map_err(|e| e.to_string())
+}
+
+/// The caption then the stamp, wrapped at `width` characters (at most five lines: the caption
+/// is cut with an ellipsis before the stamp is).
+fn caption_lines(fig: &Figure, width: usize) -> Vec<String> {
+    let mut lines = wrap(&fig.caption, width.max(20));
+    lines.truncate(4);
+    if lines.len() == 4 {
+        lines[3].push_str(" …");
+    }
+    lines.push(crate::stamp::current().line());
+    lines
+}
+
+/// Words of `text` in lines of at most `width` characters (a longer word on a line of its own).
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > width {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines
 }
 
 fn render_svg(fig: &Figure, path: &Path, size: (u32, u32), text: bool) -> Result<(), String> {
@@ -458,7 +590,10 @@ fn render_png(fig: &Figure, path: &Path, size: (u32, u32), text: bool) -> Result
 
 /// Write `stem.svg` and `stem.png`.
 pub fn render(fig: &Figure, stem: &Path) -> Result<Rendered, BenchError> {
-    let size = (PANEL_W * fig.panels.len().max(1) as u32, PANEL_H);
+    let size = (
+        PANEL_W * fig.panels.len().max(1) as u32,
+        PANEL_H + CAPTION_H,
+    );
     // Not `with_extension`: stems such as `fig6_schedulers_f0.1` contain dots.
     let with_ext = |ext: &str| {
         let mut s = stem.as_os_str().to_owned();
@@ -540,11 +675,10 @@ mod tests {
     fn a_panel_with_dashed_series_and_references_renders() {
         let dir = std::env::temp_dir().join(format!("foveal-plots-{}", std::process::id()));
         std::fs::create_dir_all(&dir).expect("dir");
-        let c = |m: f64| MeanCi {
-            mean: m,
-            half: 0.1 * m,
-            n: 5,
-            non_finite: 0,
+        let c = |m: f64| Interval {
+            value: m,
+            lo: 0.9 * m,
+            hi: 1.1 * m,
         };
         let fig = Figure {
             panels: vec![Panel {
@@ -567,16 +701,59 @@ mod tests {
                 ],
                 references: vec![(16.0, "16x (paper)".into())],
             }],
+            caption: "T over the exact frame's, mean of 5 seeds, bars 95% intervals.".into(),
         };
         let r = render(&fig, &dir.join("f")).expect("rendered");
         for f in [&r.svg, &r.png] {
             assert!(std::fs::metadata(f).map(|m| m.len()).unwrap_or(0) > 100);
         }
+        let svg = std::fs::read_to_string(&r.svg).unwrap_or_default();
+        if r.with_text {
+            assert!(svg.contains("mean of 5 seeds"), "the caption is drawn");
+            assert!(
+                svg.contains(crate::stamp::current().engine),
+                "the stamp is drawn"
+            );
+        }
         let pal = palette(&fig);
-        assert_eq!(pal, ["a"]);
+        assert_eq!(pal.last().map(String::as_str), Some("a"));
+        assert_eq!(
+            pal[0], "round-robin",
+            "schedulers keep their colours in every figure"
+        );
         let p = &fig.panels[0];
         assert_eq!(color_of(&pal, &p.series[0]), color_of(&pal, &p.series[1]));
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// On a log axis a zero is marked on the floor and breaks the line, and an interval reaching
+    /// below zero is drawn to the floor, not cut to one side.
+    #[test]
+    fn zeros_break_the_line_and_low_ends_reach_the_floor() {
+        let at = |value: f64, lo: f64, hi: f64| Interval { value, lo, hi };
+        let s = Series {
+            name: "priced".into(),
+            points: vec![
+                (1.0, at(0.5, 0.4, 0.6)),
+                (10.0, at(0.0, 0.0, 0.1)),
+                (100.0, at(0.3, -0.1, 0.7)),
+            ],
+            dashed: false,
+        };
+        let p = Panel {
+            log_x: true,
+            log_y: true,
+            series: vec![s.clone()],
+            ..Panel::default()
+        };
+        let drawn = points(&s, &p, -9.0);
+        assert!(drawn[0].is_some() && drawn[1].is_none());
+        let last = drawn[2].expect("drawn");
+        assert_eq!(last.2, -9.0, "the low end goes to the floor");
+        assert!((last.3 - 0.7f64.log10()).abs() < 1e-12);
+        assert_eq!(zeros(&s, &p), vec![1.0]);
+        let lines: Vec<usize> = drawn.split(Option::is_none).map(<[_]>::len).collect();
+        assert_eq!(lines, [1, 1], "two runs, not one line across the zero");
     }
 
     #[test]

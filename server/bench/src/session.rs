@@ -222,6 +222,7 @@ fn open_loop_segment(
         model_text(&c.measure_model)
     );
     let cfg = OpenLoopConfig {
+        primary: Vec::new(),
         ns: vec![n],
         seeds: vec![c.scene.seed],
         frames: vec![(n, frames)],

@@ -70,6 +70,17 @@ pub fn t975(df: u64) -> f64 {
     }
 }
 
+/// A point estimate with the ends of its interval (what a figure draws).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Interval {
+    /// The estimate.
+    pub value: f64,
+    /// Lower end (NaN when unknown).
+    pub lo: f64,
+    /// Upper end (NaN when unknown).
+    pub hi: f64,
+}
+
 /// Mean of independent replicates with the half-width of its 95% confidence interval.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MeanCi {
@@ -119,6 +130,15 @@ impl MeanCi {
     /// Upper end of the interval.
     pub fn hi(&self) -> f64 {
         self.mean + self.half
+    }
+
+    /// The mean and the ends of its interval.
+    pub fn interval(&self) -> Interval {
+        Interval {
+            value: self.mean,
+            lo: self.lo(),
+            hi: self.hi(),
+        }
     }
 
     /// `mean ± half` with `digits` significant digits (`mean` alone without a CI); where some

@@ -54,13 +54,15 @@ fn tiny_open_loop() -> OpenLoopConfig {
 /// The sensitivity grid at two models and one budget (its frames are the open-loop part's).
 fn tiny_grid() -> OpenLoopConfig {
     let mut g = OpenLoopConfig::grid();
+    g.ns = vec![150];
     g.budgets = vec![Budget::Tests(0.3)];
     g.conditions.truncate(2);
     g
 }
 
 /// Parse a CSV: a header and rows of the same width whose non-empty fields are numbers, except
-/// the named text columns.
+/// the named text columns and the stamp's (`commit`, `engine_hash`: every row says what computed
+/// it, this build's engine).
 fn parse_csv(path: &Path, text_cols: &[&str]) -> (Vec<String>, Vec<Vec<String>>) {
     let text = std::fs::read_to_string(path).expect("csv readable");
     let mut lines = text.lines();
@@ -77,7 +79,18 @@ fn parse_csv(path: &Path, text_cols: &[&str]) -> (Vec<String>, Vec<Vec<String>>)
     for r in &rows {
         assert_eq!(r.len(), header.len(), "{}: {r:?}", path.display());
         for (h, v) in header.iter().zip(r) {
-            if text_cols.contains(&h.as_str()) || v.is_empty() {
+            if h == "engine_hash" {
+                assert_eq!(
+                    v,
+                    foveal_bench::stamp::current().engine,
+                    "{}",
+                    path.display()
+                );
+            }
+            if text_cols.contains(&h.as_str())
+                || ["commit", "engine_hash", "primary"].contains(&h.as_str())
+                || v.is_empty()
+            {
                 continue;
             }
             assert!(
@@ -129,6 +142,10 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
         &["part", "mode", "scheduler"],
     );
     assert!(h.contains(&"true_p_ci95".to_string()));
+    assert!(
+        h.contains(&"engine_hash".to_string()),
+        "summaries are stamped"
+    );
     assert_eq!(summary.len(), 2 * (2 + k * 3));
     parse_csv(
         &out.join("curves_summary.csv"),

@@ -7,8 +7,10 @@ use super::{Group, METRICS};
 use crate::error::BenchError;
 use crate::runner::RunSummary;
 
+/// Write a CSV with the commit and engine hash on every row ([`crate::stamp`]).
 fn write_file(path: &Path, text: &str) -> Result<(), BenchError> {
-    std::fs::write(path, text).map_err(|e| BenchError::io(path, e))
+    let stamped = crate::stamp::current().csv(text);
+    std::fs::write(path, stamped).map_err(|e| BenchError::io(path, e))
 }
 
 /// One row per run.

@@ -6,6 +6,7 @@ use foveal_engine::SchedulerKind;
 
 use super::{Group, Metric, find, paired_ratio};
 use crate::protocol::{Mode, Part, StudyConfig};
+use crate::ratio::RatioCi;
 use crate::stats::{MeanCi, sig};
 
 fn model_name(cfg: &StudyConfig) -> String {
@@ -213,7 +214,7 @@ pub fn best_vs_expected_gain(
     gs: &[Group<'_>],
     n: u32,
     f: f64,
-) -> Option<(SchedulerKind, MeanCi, MeanCi)> {
+) -> Option<(SchedulerKind, MeanCi, RatioCi)> {
     let tp: Metric = |r| r.true_p.mean();
     let mode = Mode::Fraction(f);
     let best = PAPER_SCHEDULERS

@@ -13,6 +13,7 @@ pub use markdown::{best_vs_expected_gain, curves_markdown, describe, headlines, 
 use foveal_engine::SchedulerKind;
 
 use crate::protocol::{Mode, Part};
+use crate::ratio::RatioCi;
 use crate::runner::RunSummary;
 use crate::stats::MeanCi;
 
@@ -55,6 +56,12 @@ impl Group<'_> {
     pub fn ci(&self, m: Metric) -> MeanCi {
         MeanCi::of(self.runs.iter().map(|r| m(r)))
     }
+
+    /// Mean of a metric across seeds with its bootstrap interval (what a figure draws: on a log
+    /// axis it stays positive where every seed is).
+    pub fn boot(&self, m: Metric) -> RatioCi {
+        RatioCi::mean(self.runs.iter().map(|r| m(r)))
+    }
 }
 
 /// Group runs by condition, in order of first appearance.
@@ -90,12 +97,13 @@ pub fn find<'g, 'a>(
         .find(|g| g.part == part && g.n == n && g.mode == mode && g.scheduler == scheduler)
 }
 
-/// Paired ratio `m(a) / m(b)` per seed, then mean and CI across seeds.
-pub fn paired_ratio(a: &Group<'_>, b: &Group<'_>, m: Metric) -> MeanCi {
-    MeanCi::of(a.runs.iter().filter_map(|ra| {
+/// Paired ratio of `m` over seeds: the ratio of the means of `a` and `b` on the seeds both ran,
+/// with its bootstrap interval over seeds ([`RatioCi`]).
+pub fn paired_ratio(a: &Group<'_>, b: &Group<'_>, m: Metric) -> RatioCi {
+    RatioCi::of(a.runs.iter().filter_map(|ra| {
         b.runs
             .iter()
             .find(|rb| rb.spec.seed == ra.spec.seed)
-            .map(|rb| m(ra) / m(rb))
+            .map(|rb| (m(ra), m(rb)))
     }))
 }
