@@ -43,6 +43,7 @@
 
 pub mod calibrate;
 pub mod capacity;
+pub mod claims;
 pub mod clock;
 pub mod contact;
 pub mod endpoint;

@@ -56,6 +56,10 @@ enum Command {
     /// and 10,000 far from the origin. Exits non-zero if the engine's answer contradicts a sure
     /// verdict of the judge.
     ShapeCheck(ShapeCheckArgs),
+    /// Answer the paper's section 4 claim by claim from a study's CSVs (`REPORT.md` in DIR), and
+    /// rewrite the generated block of each `--quote` file (README.md, docs/BENCHMARKS.md) from
+    /// them: every figure quoted comes from the committed CSVs.
+    StudyReport(StudyReportArgs),
     /// Merge the partial results of a sharded `study` or `open-loop` run (every
     /// `*.partial.json` in each DIR, or the files given) into the reports, CSVs and figures one
     /// machine would have written. Refuses partials of different protocols or engine sources,
@@ -125,6 +129,41 @@ fn frames(args: &FramesArgs) -> Result<()> {
     };
     let summary = fr::run(&cfg)?;
     println!("{}", fr::line(&cfg, &summary));
+    Ok(())
+}
+
+#[derive(Debug, Args)]
+struct StudyReportArgs {
+    /// The study's directory (its `table_runs.csv`, `open_loop_runs.csv` and `stamp.json`).
+    #[arg(default_value = "docs/study")]
+    dir: PathBuf,
+    /// Files whose generated block (between the `study-claims` markers) is rewritten.
+    #[arg(long)]
+    quote: Vec<PathBuf>,
+}
+
+fn study_report(args: &StudyReportArgs) -> Result<()> {
+    let text = foveal_bench::claims::write(&args.dir).context("writing the study's report")?;
+    eprintln!(
+        "wrote {}",
+        args.dir.join(foveal_bench::claims::REPORT_FILE).display()
+    );
+    let block = foveal_bench::claims::quote(&args.dir)?;
+    for path in &args.quote {
+        let old =
+            std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+        let new = foveal_bench::claims::replace_quote(&old, &block).with_context(|| {
+            format!(
+                "{} has no generated block: put the lines `{}` and `{}` where it goes",
+                path.display(),
+                foveal_bench::claims::QUOTE_BEGIN,
+                foveal_bench::claims::QUOTE_END
+            )
+        })?;
+        std::fs::write(path, new).with_context(|| format!("writing {}", path.display()))?;
+        eprintln!("quoted into {}", path.display());
+    }
+    print!("{text}");
     Ok(())
 }
 
@@ -396,7 +435,7 @@ struct OpenLoopProtocol {
     /// calibration's).
     #[arg(long)]
     seeds: Option<u64>,
-    /// Frames per run at every N (default 1,000 at N = 500, 200 at N = 10,000).
+    /// Frames per run at every N (default 500 at N = 300 and 500, 100 at N = 10,000).
     #[arg(long)]
     frames: Option<u32>,
     /// Settle every pair within 5 degrees of the fixation first in the priced scheduler's
@@ -887,6 +926,14 @@ fn write_study_stamp(out: &std::path::Path) -> Result<()> {
         "stamp: commit {}, engine {}, fingerprint {}",
         st.commit, st.engine_hash, st.fingerprint
     );
+    // The claims' report needs the table and the open loop; a partial protocol has no report.
+    if out.join("table_runs.csv").is_file() && out.join("open_loop_runs.csv").is_file() {
+        foveal_bench::claims::write(out).context("writing the study's report")?;
+        eprintln!(
+            "wrote {}",
+            out.join(foveal_bench::claims::REPORT_FILE).display()
+        );
+    }
     Ok(())
 }
 
@@ -1105,6 +1152,9 @@ fn capacity(args: &CapacityArgs) -> Result<()> {
 
 fn main() -> Result<()> {
     let cli = Cli::parse();
+    // The commit is read as the run starts: the sources may change while a long run goes on,
+    // and its outputs belong to the build that started.
+    let _ = foveal_bench::stamp::current();
     match &cli.command {
         Command::Study(args) => study(args),
         Command::Stress(args) => stress(args),
@@ -1116,6 +1166,7 @@ fn main() -> Result<()> {
         Command::ShapeCheck(args) => shape_check(args),
         Command::Replay(args) => replay(&args.file, &args.options),
         Command::Merge(args) => merge(args),
+        Command::StudyReport(args) => study_report(args),
         Command::Frames(args) => frames(args),
         Command::Trees(args) => trees(args),
     }

@@ -120,12 +120,16 @@ impl RatioCi {
         if self.n == 0 {
             return format!("non-finite ({0} of {0})", self.non_finite);
         }
-        let value = if self.lo.is_nan() && self.hi.is_nan() {
+        let point = if self.ratio == f64::INFINITY {
+            "∞".to_string()
+        } else {
             sig(self.ratio, digits)
+        };
+        let value = if self.lo.is_nan() && self.hi.is_nan() {
+            point
         } else {
             format!(
-                "{} [{}, {}]",
-                sig(self.ratio, digits),
+                "{point} [{}, {}]",
                 end(self.lo, digits),
                 end(self.hi, digits)
             )

@@ -79,7 +79,7 @@ fn commit() -> String {
     }
 }
 
-/// This process's stamp (git is asked once).
+/// This process's stamp (git is asked once; `foveal-bench` asks as it starts).
 pub fn current() -> &'static Stamp {
     static STAMP: OnceLock<Stamp> = OnceLock::new();
     STAMP.get_or_init(|| Stamp {
