@@ -56,7 +56,7 @@ enum Command {
     /// and 10,000 far from the origin. Exits non-zero if the engine's answer contradicts a sure
     /// verdict of the judge.
     ShapeCheck(ShapeCheckArgs),
-    /// Answer the paper's section 4 claim by claim from a study's CSVs (`REPORT.md` in DIR), and
+    /// Answer the paper's section 4 claim by claim from a study's CSVs (DIR/REPORT.md), and
     /// rewrite the generated block of each `--quote` file (README.md, docs/BENCHMARKS.md) from
     /// them: every figure quoted comes from the committed CSVs.
     StudyReport(StudyReportArgs),

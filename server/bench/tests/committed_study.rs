@@ -1,6 +1,6 @@
 //! The committed study (`docs/study`) against this engine and against its own CSVs: it must have
 //! been run by an engine that answers as this one does, and every number quoted from it (its
-//! `REPORT.md`, the generated blocks of README.md and docs/BENCHMARKS.md) must be what its CSVs
+//! `docs/study/REPORT.md`, the generated blocks of README.md and docs/BENCHMARKS.md) must be what its CSVs
 //! give (`docs/DESIGN.md`, "Statistics of the study").
 
 use std::path::{Path, PathBuf};
