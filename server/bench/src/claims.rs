@@ -142,7 +142,7 @@ impl Tested {
             (Some(p), _) if p <= ALPHA => "reproduces",
             (_, Some(p)) if p <= ALPHA => "only in part: the direction holds, not the size",
             (_, Some(_)) => "does not reproduce",
-            _ => "untestable (a seed with zero error, or too few seeds)",
+            _ => "untestable (a seed with zero or no error, too few seeds, or no spread)",
         }
     }
 
@@ -465,7 +465,8 @@ pub fn report(dir: &Path) -> Result<String, BenchError> {
         "# The paper's section 4, claim by claim\n\nGenerated from this directory's \
          `table_runs.csv` and `open_loop_runs.csv` by `cargo run --release -p foveal-bench -- \
          study-report DIR`; do not edit. Each claim has one primary endpoint, named in the \
-         protocol before the run and tested alone: a one-sided t test on the per-seed log ratios \
+         code (`claims.rs`, `open_loop::primary_endpoints`) and committed before the run, tested \
+         alone: a one-sided t test on the per-seed log ratios \
          (α = 0.05). Ratios are of the means over seeds with 95% percentile-bootstrap intervals \
          over seeds and n (`docs/DESIGN.md`, \"Statistics of the study\"). Verdicts: \
          *reproduces* (the claimed size is shown), *only in part* (the direction is shown, not \

@@ -62,7 +62,9 @@ impl Verdict {
             Self::Reproduces => "reproduces",
             Self::Partly => "only in part (below round-robin, not below half of it)",
             Self::DoesNot => "does not reproduce",
-            Self::Untestable => "untestable (a seed with zero error, or too few seeds)",
+            Self::Untestable => {
+                "untestable (a seed with zero or no error, too few seeds, or no spread)"
+            }
             Self::NotRun => "not run by this protocol",
         }
     }
@@ -104,6 +106,10 @@ pub fn secondary_halving(rows: &[SummaryRow], primary: &[Endpoint]) -> Vec<Optio
 /// The report's section on the primary endpoints: each claim, its cell, the ratio with its
 /// interval and n, the p-value and the verdict.
 pub fn markdown(primary: &[Endpoint], rows: &[SummaryRow]) -> String {
+    if primary.is_empty() {
+        // An exploratory protocol (the grid): every cell is secondary.
+        return String::new();
+    }
     let mut s = String::from(
         "### Primary endpoints\n\nNamed in the protocol before the run; each is the one test of \
          its claim (one-sided t on the per-seed log ratios, α = 0.05, no correction). Ratio: mean \

@@ -941,8 +941,12 @@ pub fn run_frames_parts(
                 window.push(time_exact(&mut exact, &input, &clock));
                 base_ns = window.median();
                 rate_ns = window.median_rate();
-                bases.push(base_ns);
-                rates.push(rate_ns);
+                // What the report quotes of the base and the machine's speed is the first
+                // batch's: one pass over the frames, not several replays at different times.
+                if first {
+                    bases.push(base_ns);
+                    rates.push(rate_ns);
+                }
             }
             clairvoyant::truths(input.tree, input.world, input.candidates, &mut truths);
             let fix_px = input.viewer.to_pixels(fixation.x, fixation.y);
@@ -1613,6 +1617,7 @@ pub fn halving_markdown(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
     let untestable = rows
         .iter()
         .filter(|r| r.scheduler != "round-robin" && r.scheduler != "clairvoyant")
+        .filter(|r| !cfg.primary.iter().any(|e| e.is(r)))
         .filter(|r| r.p_halves.is_none())
         .count();
     let mut s = format!(
@@ -1621,8 +1626,8 @@ pub fn halving_markdown(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
          of this report (one-sided t on per-seed log ratios, α = {}); it holds in {held} of them. \
          `ci`: only the uncorrected 95% bootstrap interval lies below 0.5; `mean`: only the \
          estimate does; blank: not halved; `primary`: a primary endpoint, tested alone above. \
-         {untestable} cells could not be tested (a seed with zero P) and are left out of the \
-         family.\n\n",
+         {untestable} cells could not be tested (a seed with zero or no P, or no spread across \
+         seeds) and are left out of the family.\n\n",
         endpoint::ALPHA
     );
     for &n in &cfg.ns {

@@ -85,7 +85,9 @@ const LEGEND_W: u32 = 200;
 /// Height of the caption's area under the panels.
 const CAPTION_H: u32 = 96;
 
-const COLORS: [RGBColor; 12] = [
+/// Enough colours that the fixed names and a figure's others never share one (the grid's four
+/// priority-queue thresholds beside the fixed ten).
+const COLORS: [RGBColor; 16] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
@@ -96,8 +98,12 @@ const COLORS: [RGBColor; 12] = [
     RGBColor(127, 127, 127),
     RGBColor(188, 189, 34),
     RGBColor(23, 190, 207),
-    RGBColor(0, 0, 0),
     RGBColor(174, 199, 232),
+    RGBColor(255, 187, 120),
+    RGBColor(152, 223, 138),
+    RGBColor(255, 152, 150),
+    RGBColor(197, 176, 213),
+    RGBColor(196, 156, 148),
 ];
 
 /// Series names that keep one colour (an index into the palette) in every figure: the
@@ -261,7 +267,14 @@ fn points(s: &Series, p: &Panel, floor: f64) -> Vec<Option<Drawn>> {
                     tx(v, p.log_y).unwrap_or(floor)
                 }
             };
-            Some((x, y, end(c.lo).min(y), end(c.hi).max(y)))
+            // An unbounded upper end (a resample with no finite ratio) reaches the axis' top,
+            // set once the range is known.
+            let hi = if c.hi == f64::INFINITY {
+                f64::INFINITY
+            } else {
+                end(c.hi).max(y)
+            };
+            Some((x, y, end(c.lo).min(y), hi))
         })
         .collect()
 }
@@ -350,7 +363,7 @@ fn draw_panel<DB: DrawingBackend>(
         .iter()
         .map(|v| {
             v.iter()
-                .map(|q| q.map(|(x, y, lo, hi)| (x, y, lo.max(y0), hi)))
+                .map(|q| q.map(|(x, y, lo, hi)| (x, y, lo.max(y0), hi.min(y1))))
                 .collect()
         })
         .collect();

@@ -227,14 +227,22 @@ pub fn closed_loop_cost_s(cfg: &StudyConfig, spec: &RunSpec) -> f64 {
 }
 
 /// Estimated seconds of an open-loop run at `n` of `parts` (conditions cut as wanted): its frames
-/// times its distinct scheduling runs and what every frame costs beside them.
+/// times its distinct scheduling runs, and what every frame costs beside them once per budget
+/// (each budget's colliders run on their own replay of the frames).
 fn open_loop_run_cost_s(parts: &[&OpenLoopConfig], n: u32) -> f64 {
     let Some(first) = parts.first() else {
         return 0.0;
     };
     let runs = open_loop::schedule_runs(parts) as f64;
+    let mut budgets: Vec<open_loop::Budget> = Vec::new();
+    for b in parts.iter().flat_map(|p| &p.budgets) {
+        if !budgets.contains(b) {
+            budgets.push(*b);
+        }
+    }
+    let replays = budgets.len().max(1) as f64;
     let frames = f64::from(first.warmup + first.timing_frames + first.frames_for(n));
-    frames * (runs + OPEN_FRAME_OVERHEAD_RUNS) * loglog(&OPEN_FRAME_S, f64::from(n))
+    frames * (runs + OPEN_FRAME_OVERHEAD_RUNS * replays) * loglog(&OPEN_FRAME_S, f64::from(n))
 }
 
 /// Estimated seconds of one condition `ci` of open-loop part `part` at `n`, run alone.
@@ -254,11 +262,17 @@ pub fn open_loop_cells(parts: &[&OpenLoopConfig]) -> Vec<CellSpec> {
     };
     let mut cells = Vec::new();
     for (n, seed) in open_loop::cells(first) {
+        // A part runs only at its own N (the study's grid at N = 500 alone).
+        let here: Vec<&OpenLoopConfig> = parts
+            .iter()
+            .copied()
+            .filter(|p| p.ns.contains(&n))
+            .collect();
         let group = CellGroup {
             key: format!("open-loop_n{n}_s{seed}"),
-            cost_s: open_loop_run_cost_s(parts, n),
+            cost_s: open_loop_run_cost_s(&here, n),
         };
-        for (pi, p) in parts.iter().enumerate() {
+        for (pi, p) in parts.iter().enumerate().filter(|(_, p)| p.ns.contains(&n)) {
             for ci in 0..p.conditions.len() {
                 cells.push(CellSpec {
                     id: format!("{}_p{pi}_c{ci:02}", group.key),
