@@ -615,29 +615,17 @@ mod tests {
     /// "only in part".
     #[test]
     fn verdicts_follow_the_tests() {
-        let big: Vec<(f64, f64)> = [20.0, 22.0, 25.0, 21.0, 24.0]
-            .iter()
-            .map(|&r| (r, 1.0))
-            .collect();
-        assert_eq!(Tested::of(&big, Side::Above, 16.0).verdict(), "reproduces");
-        let some: Vec<(f64, f64)> = [3.0, 3.2, 2.9, 3.1, 3.05]
-            .iter()
-            .map(|&r| (r, 1.0))
-            .collect();
-        assert!(
-            Tested::of(&some, Side::Above, 16.0)
-                .verdict()
-                .contains("only in part")
-        );
-        let none: Vec<(f64, f64)> = [0.9, 1.2, 1.0, 1.1, 0.95]
-            .iter()
-            .map(|&r| (r, 1.0))
-            .collect();
-        assert!(
-            Tested::of(&none, Side::Below, 0.5)
-                .verdict()
-                .contains("does not")
-        );
+        // Per-seed ratios as pairs over 1.
+        let verdict = |ratios: [f64; 5], side, factor| {
+            let pairs: Vec<(f64, f64)> = ratios.iter().map(|&r| (r, 1.0)).collect();
+            Tested::of(&pairs, side, factor).verdict()
+        };
+        let big = [20.0, 22.0, 25.0, 21.0, 24.0];
+        assert_eq!(verdict(big, Side::Above, 16.0), "reproduces");
+        let some = [3.0, 3.2, 2.9, 3.1, 3.05];
+        assert!(verdict(some, Side::Above, 16.0).contains("only in part"));
+        let none = [0.9, 1.2, 1.0, 1.1, 0.95];
+        assert!(verdict(none, Side::Below, 0.5).contains("does not"));
         assert!(
             Tested::of(&[], Side::Below, 0.5)
                 .verdict()
