@@ -11,6 +11,10 @@
 //! amplitude, Carpenter 1988; here [`saccade_duration_s`], 20-60 ms by on-screen distance, a
 //! normalised distance of 1 being about 40 degrees on a desktop display). During a saccade the
 //! reported gaze moves linearly from one target to the next, as a tracker's samples do.
+//!
+//! Where the fixations land is the viewer's [`Placement`]: uniform over the central part (the
+//! default), a central bias measured on scene viewing, or chosen by the caller at each saccade
+//! (the study's scene-driven viewer, which looks where the scene's collisions and motion are).
 
 use crate::rng::SplitMix64;
 
@@ -26,6 +30,63 @@ const SEED_SALT: u64 = 0x6A5E_5EED_0000_0001;
 #[must_use]
 pub fn saccade_duration_s(amplitude: f64) -> f64 {
     (0.020 + 0.040 * amplitude.min(1.0)).min(0.060)
+}
+
+/// Where the scripted viewer's fixations land. The timeline (fixation durations, saccades) is the
+/// same for every placement; only the targets differ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Placement {
+    /// Uniformly random points of the central part of the screen ([`MARGIN`] from each edge).
+    Uniform,
+    /// The central bias of scene viewing: an axis-aligned Gaussian about the screen centre with
+    /// these standard deviations (normalised screen units per axis), truncated to the screen
+    /// (redrawn until inside). Clarke and Tatler (2014, Vision Research 102: 41-51) fit such an
+    /// anisotropic Gaussian across ten eye-movement datasets as a baseline for image-independent
+    /// fixation placement.
+    CentralBias {
+        /// Horizontal standard deviation, fraction of the screen width.
+        sd_x: f64,
+        /// Vertical standard deviation, fraction of the screen height.
+        sd_y: f64,
+    },
+    /// The first fixation at the screen centre; every later target from the caller
+    /// ([`Viewer::at_choosing`]).
+    Chosen,
+}
+
+impl Placement {
+    /// A target under this placement, or `None` when the caller chooses.
+    fn draw(self, rng: &mut SplitMix64) -> Option<[f64; 2]> {
+        match self {
+            Self::Uniform => Some([
+                rng.range(MARGIN, 1.0 - MARGIN),
+                rng.range(MARGIN, 1.0 - MARGIN),
+            ]),
+            Self::CentralBias { sd_x, sd_y } => {
+                // Rejection keeps the truncated Gaussian's shape; with the measured spreads
+                // (about a quarter of the screen) nearly every draw lands on screen, and the
+                // cap only guards against absurd spreads.
+                for _ in 0..64 {
+                    let (gx, gy) = gaussian_pair(rng);
+                    let p = [0.5 + sd_x * gx, 0.5 + sd_y * gy];
+                    if (0.0..=1.0).contains(&p[0]) && (0.0..=1.0).contains(&p[1]) {
+                        return Some(p);
+                    }
+                }
+                Some([0.5, 0.5])
+            }
+            Self::Chosen => None,
+        }
+    }
+}
+
+/// Two independent standard normal deviates (Box-Muller).
+pub fn gaussian_pair(rng: &mut SplitMix64) -> (f64, f64) {
+    let u1 = rng.next_f64().max(f64::MIN_POSITIVE);
+    let u2 = rng.next_f64();
+    let r = (-2.0 * u1.ln()).sqrt();
+    let a = std::f64::consts::TAU * u2;
+    (r * a.cos(), r * a.sin())
 }
 
 /// One segment: hold still at `to` (fixation) or move from `from` to `to` (saccade).
@@ -58,21 +119,26 @@ pub struct ViewerGaze {
 #[derive(Debug, Clone)]
 pub struct Viewer {
     rng: SplitMix64,
+    placement: Placement,
     segments: Vec<Segment>,
 }
 
 impl Viewer {
-    /// A viewer fixed by `seed`; time 0 is the start of its first fixation.
+    /// A viewer fixed by `seed`, fixating uniformly; time 0 is the start of its first fixation.
     #[must_use]
     pub fn new(seed: u64) -> Self {
+        Self::with_placement(seed, Placement::Uniform)
+    }
+
+    /// A viewer fixed by `seed` whose fixations land by `placement`.
+    #[must_use]
+    pub fn with_placement(seed: u64, placement: Placement) -> Self {
         let mut rng = SplitMix64::new(seed ^ SEED_SALT);
-        let p = [
-            rng.range(MARGIN, 1.0 - MARGIN),
-            rng.range(MARGIN, 1.0 - MARGIN),
-        ];
+        let p = placement.draw(&mut rng).unwrap_or([0.5, 0.5]);
         let d = rng.range(FIXATION_S.0, FIXATION_S.1);
         Self {
             rng,
+            placement,
             segments: vec![Segment {
                 start_s: 0.0,
                 end_s: d,
@@ -82,16 +148,19 @@ impl Viewer {
         }
     }
 
-    fn extend_to(&mut self, t: f64) {
+    fn extend_to(&mut self, t: f64, choose: &mut dyn FnMut(&mut SplitMix64, [f64; 2]) -> [f64; 2]) {
         while let Some(&last) = self.segments.last() {
             if last.end_s > t {
                 break;
             }
             let from = last.to;
-            let to = [
-                self.rng.range(MARGIN, 1.0 - MARGIN),
-                self.rng.range(MARGIN, 1.0 - MARGIN),
-            ];
+            let to = match self.placement.draw(&mut self.rng) {
+                Some(p) => p,
+                None => {
+                    let p = choose(&mut self.rng, from);
+                    [p[0].clamp(0.0, 1.0), p[1].clamp(0.0, 1.0)]
+                }
+            };
             let amplitude = (to[0] - from[0]).hypot(to[1] - from[1]);
             let saccade = saccade_duration_s(amplitude);
             let fix = self.rng.range(FIXATION_S.0, FIXATION_S.1);
@@ -114,8 +183,20 @@ impl Viewer {
     /// The gaze at `t` seconds (any order of calls; non-decreasing is fastest). A `t` that is not
     /// finite gives the first fixation.
     pub fn at(&mut self, t: f64) -> ViewerGaze {
+        self.at_choosing(t, &mut |_, from| from)
+    }
+
+    /// [`Self::at`], with `choose` giving each new target of a [`Placement::Chosen`] viewer from
+    /// the generator and the last target (clamped to the screen). It is called when a fixation
+    /// that ends by `t` is followed, so a caller that asks frame by frame chooses from the frame
+    /// at which the saccade starts. Other placements never call it.
+    pub fn at_choosing(
+        &mut self,
+        t: f64,
+        choose: &mut dyn FnMut(&mut SplitMix64, [f64; 2]) -> [f64; 2],
+    ) -> ViewerGaze {
         let t = if t.is_finite() { t } else { 0.0 };
-        self.extend_to(t);
+        self.extend_to(t, choose);
         let i = self
             .segments
             .partition_point(|s| s.end_s <= t)
@@ -135,7 +216,7 @@ impl Viewer {
 
     /// Durations (seconds) of the fixations that end by `t`: for checking the model.
     pub fn fixation_durations(&mut self, t: f64) -> Vec<f64> {
-        self.extend_to(t);
+        self.extend_to(t, &mut |_, from| from);
         self.segments
             .iter()
             .filter(|s| s.is_fixation() && s.end_s <= t)
@@ -146,7 +227,7 @@ impl Viewer {
     /// The fixations that end by `t`, as `(start_s, end_s, x, y)`: the ground truth a detector
     /// run on this viewer's samples should find.
     pub fn fixations(&mut self, t: f64) -> Vec<(f64, f64, f64, f64)> {
-        self.extend_to(t);
+        self.extend_to(t, &mut |_, from| from);
         self.segments
             .iter()
             .filter(|s| s.is_fixation() && s.end_s <= t)
@@ -176,6 +257,65 @@ mod tests {
             assert!((MARGIN..=1.0 - MARGIN).contains(&g.x), "{g:?}");
             assert!((MARGIN..=1.0 - MARGIN).contains(&g.y), "{g:?}");
         }
+    }
+
+    /// The central bias places fixations about the centre with the spreads asked for, all on
+    /// screen; the timeline is the uniform viewer's.
+    #[test]
+    fn central_bias_is_centred_with_its_spread_and_on_screen() {
+        let mut v = Viewer::with_placement(
+            3,
+            Placement::CentralBias {
+                sd_x: 0.23,
+                sd_y: 0.28,
+            },
+        );
+        let f = v.fixations(2_000.0);
+        assert!(f.len() > 5_000, "{}", f.len());
+        let n = f.len() as f64;
+        let (mx, my) = (
+            f.iter().map(|x| x.2).sum::<f64>() / n,
+            f.iter().map(|x| x.3).sum::<f64>() / n,
+        );
+        assert!(
+            (mx - 0.5).abs() < 0.01 && (my - 0.5).abs() < 0.01,
+            "{mx} {my}"
+        );
+        // Truncation at the edges narrows the spread a little (to about 0.21 and 0.24 here).
+        let sd = |m: f64, k: fn(&(f64, f64, f64, f64)) -> f64| {
+            (f.iter().map(|x| (k(x) - m).powi(2)).sum::<f64>() / n).sqrt()
+        };
+        let (sx, sy) = (sd(mx, |x| x.2), sd(my, |x| x.3));
+        assert!(
+            (0.19..0.23).contains(&sx) && (0.21..0.28).contains(&sy),
+            "{sx} {sy}"
+        );
+        assert!(
+            f.iter()
+                .all(|x| (0.0..=1.0).contains(&x.2) && (0.0..=1.0).contains(&x.3))
+        );
+        let d = v.fixation_durations(100.0);
+        assert!(d.iter().all(|&x| (0.15..=0.4).contains(&x)));
+    }
+
+    /// A chosen placement starts at the centre and takes each later target from the caller,
+    /// clamped to the screen, once per saccade.
+    #[test]
+    fn chosen_targets_come_from_the_caller() {
+        let mut v = Viewer::with_placement(5, Placement::Chosen);
+        assert_eq!((v.at(0.0).x, v.at(0.0).y), (0.5, 0.5));
+        let mut calls = 0;
+        let mut choose = |_: &mut SplitMix64, from: [f64; 2]| {
+            calls += 1;
+            [from[0] + 0.3, -1.0]
+        };
+        for i in 0..600 {
+            v.at_choosing(f64::from(i) / 60.0, &mut choose);
+        }
+        let f = v.fixations(10.0);
+        assert!(calls >= 20, "{calls}");
+        assert_eq!((f[1].2, f[1].3), (0.8, 0.0));
+        assert_eq!((f[2].2, f[2].3), (1.0, 0.0));
     }
 
     #[test]

@@ -12,10 +12,14 @@ use foveal_engine::{EccentricityUnit, PerceptualFunction, PerceptualModel, Sched
 
 use crate::plots::{Figure, PAPER_P_RATIO, Panel, Series, panel};
 use crate::protocol::{Mode, Part, StudyConfig};
+use crate::ratio::RatioCi;
 use crate::report::{Group, Metric, find, paired_ratio};
 
 /// The paper's claim for interruption: T "up to 16 times lower" (section 4).
 const PAPER_T_RATIO: f64 = 16.0;
+
+/// The paper's claim for inaccuracy against N: "up to 200 times worse" (section 4, figure 5).
+const PAPER_GROWTH: f64 = 200.0;
 
 /// Unit of P (and of the gap g') under `model`.
 pub fn p_unit(model: &PerceptualModel) -> &'static str {
@@ -35,15 +39,60 @@ fn over_n(
     name: String,
     dashed: bool,
 ) -> Series {
+    over_n_in(gs, Part::Table, modes, k, m, name, dashed)
+}
+
+/// [`over_n`] in any closed-loop part.
+fn over_n_in(
+    gs: &[Group<'_>],
+    part: Part,
+    modes: &[(u32, Mode)],
+    k: SchedulerKind,
+    m: Metric,
+    name: String,
+    dashed: bool,
+) -> Series {
     Series {
         name,
         points: modes
             .iter()
             .filter_map(|&(n, mode)| {
-                find(gs, Part::Table, n, mode, k).map(|g| (f64::from(n), g.boot(m).interval()))
+                find(gs, part, n, mode, k).map(|g| (f64::from(n), g.boot(m).interval()))
             })
             .collect(),
         dashed,
+    }
+}
+
+/// A metric at each N over the same metric at the smallest N of `modes` (same scheduler, seeds
+/// paired by number; the scenes differ by N): how the error grows with N, figure 5's claim.
+fn growth_over_n(
+    gs: &[Group<'_>],
+    modes: &[(u32, Mode)],
+    k: SchedulerKind,
+    m: Metric,
+    name: String,
+) -> Series {
+    let base = modes
+        .iter()
+        .min_by_key(|(n, _)| *n)
+        .and_then(|&(n, mode)| find(gs, Part::Table, n, mode, k));
+    Series {
+        name,
+        points: modes
+            .iter()
+            .filter_map(|&(n, mode)| {
+                let b = base?;
+                let g = find(gs, Part::Table, n, mode, k)?;
+                (g.n != b.n).then_some(())?;
+                let pairs = g.runs.iter().filter_map(|r| {
+                    let rb = b.runs.iter().find(|x| x.spec.seed == r.spec.seed)?;
+                    Some((m(r), m(rb)))
+                });
+                Some((f64::from(n), RatioCi::of(pairs).interval()))
+            })
+            .collect(),
+        dashed: false,
     }
 }
 
@@ -171,6 +220,16 @@ pub fn table_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure
         }
         panel(title.into(), y, series)
     };
+    let smallest = cfg.ns.iter().copied().min().unwrap_or(0);
+    let mut growth = panel(
+        format!("True P over N = {smallest}'s (round-robin, paired by seed)"),
+        "ratio of mean true P".into(),
+        budgets
+            .iter()
+            .map(|(name, modes)| growth_over_n(gs, modes, rr, |r| r.true_p.mean(), name.clone()))
+            .collect(),
+    );
+    growth.references = vec![(PAPER_GROWTH, "200x (paper)".into())];
     let fig5 = Figure {
         panels: vec![
             inacc_panel(
@@ -185,11 +244,14 @@ pub fn table_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure
                 |r| r.p.mean(),
                 |r| r.true_p.mean(),
             ),
+            growth,
         ],
         caption: format!(
             "The paper's figure 5: inaccuracy of round-robin against N at each interrupted \
              budget; dashed the paper's estimate (the bound on each deemed pair's gap), solid the \
-             audited truth. Open triangles on the floor: a mean of zero. {reps}"
+             audited truth. Open triangles on the floor: a mean of zero. Right: true P over its \
+             value at N = {smallest} for the same seed number (dashed: the paper's 200x; a ratio \
+             over a zero is drawn at the top). {reps}"
         ),
     };
     let mut out = vec![
@@ -319,4 +381,108 @@ pub fn curve_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure
             )
         })
         .collect()
+}
+
+/// The paper's F1 case ([`Part::F1`]): figure 5(b), Δ and P of sorted-sequential and round-robin
+/// against N at each N's budget (estimate dashed, truth solid); and figure 6(a), sorted / round-
+/// robin for Δ and P, where P below Δ is the paper's "decoupling".
+pub fn f1_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure)> {
+    let rr = SchedulerKind::RoundRobin;
+    let sorted = SchedulerKind::SortedSequential;
+    let modes: Vec<(u32, Mode)> = cfg
+        .ns
+        .iter()
+        .filter_map(|&n| {
+            let ms = cfg.f1_modes(n);
+            let tenth = Mode::Fraction(StudyConfig::F1_FRACTION);
+            ms.contains(&tenth)
+                .then_some(tenth)
+                .or_else(|| ms.first().copied())
+                .map(|m| (n, m))
+        })
+        .collect();
+    if modes.is_empty() {
+        return Vec::new();
+    }
+    let pu = p_unit(&StudyConfig::f1());
+    let both = |title: &str, y: String, est: Metric, truth: Metric| {
+        let mut series = Vec::new();
+        for k in [rr, sorted] {
+            series.push(over_n_in(
+                gs,
+                Part::F1,
+                &modes,
+                k,
+                est,
+                format!("{}, estimate", k.name()),
+                true,
+            ));
+            series.push(over_n_in(
+                gs,
+                Part::F1,
+                &modes,
+                k,
+                truth,
+                format!("{}, true", k.name()),
+                false,
+            ));
+        }
+        panel(title.into(), y, series)
+    };
+    let ratio = |name: &str, m: Metric| Series {
+        name: name.into(),
+        points: modes
+            .iter()
+            .filter_map(|&(n, mode)| {
+                let a = find(gs, Part::F1, n, mode, sorted)?;
+                let b = find(gs, Part::F1, n, mode, rr)?;
+                Some((f64::from(n), paired_ratio(a, b, m).interval()))
+            })
+            .collect(),
+        dashed: false,
+    };
+    let mut ratios = panel(
+        "Sorted-sequential / round-robin (paired by seed)".into(),
+        "ratio of means".into(),
+        vec![
+            ratio("Δ, estimate", |r| r.delta.mean()),
+            ratio("Δ, true", |r| r.true_delta.mean()),
+            ratio("P, estimate", |r| r.p.mean()),
+            ratio("P, true", |r| r.true_p.mean()),
+        ],
+    );
+    ratios.references = vec![(1.0, "round-robin".into())];
+    let reps = format!(
+        "Points: means over {} seeds x {} frames (closed loop) at a budget of {} of the exact \
+         cost; bars: 95% percentile-bootstrap intervals over seeds.",
+        cfg.seeds.len(),
+        cfg.frames,
+        StudyConfig::F1_FRACTION
+    );
+    vec![(
+        "fig5b_6a_f1_sorted".to_string(),
+        Figure {
+            panels: vec![
+                both(
+                    "Geometric inaccuracy Δ (F1 case)",
+                    "mean Δ per frame (scene units)".into(),
+                    |r| r.delta.mean(),
+                    |r| r.true_delta.mean(),
+                ),
+                both(
+                    "Perceived inaccuracy P, F1",
+                    format!("mean P per frame ({pu})"),
+                    |r| r.p.mean(),
+                    |r| r.true_p.mean(),
+                ),
+                ratios,
+            ],
+            caption: format!(
+                "The paper's figures 5(b) and 6(a): perceptually sorted sequential scheduling \
+                 against round-robin, F1 to schedule and to measure; dashed the paper's estimate, \
+                 solid the audited truth. Right: sorted over round-robin; P falling further than \
+                 Δ is the paper's decoupling. {reps}"
+            ),
+        },
+    )]
 }

@@ -8,8 +8,11 @@
 use std::path::{Path, PathBuf};
 
 use foveal_engine::Fixation;
+use foveal_engine::Viewer as Camera;
+use foveal_engine::world::World;
 use foveal_gaze::csv::CsvGazeReader;
-use foveal_gaze::viewer::Viewer;
+use foveal_gaze::rng::SplitMix64;
+use foveal_gaze::viewer::{Placement, Viewer, gaussian_pair};
 
 /// The scripted viewer of `foveal-gaze` (the same one `foveal gaze saccades` streams), asked for
 /// the fixation at each frame's start.
@@ -31,6 +34,228 @@ impl ScriptedGaze {
     /// Fixation durations (seconds) of the script up to time `t`: for checking the script.
     pub fn fixation_durations(&mut self, t: f64) -> Vec<f64> {
         self.0.fixation_durations(t)
+    }
+}
+
+/// Who watches the open loop's frames: how the viewer's fixations are placed. The study reports
+/// its headlines per viewer model, because how much gaze scheduling gains depends on where people
+/// look (`docs/DESIGN.md`, "Viewer models").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ViewerModel {
+    /// The caller's gaze; in the study the seeded script, fixating uniformly over the central 70%
+    /// of the screen ([`ScriptedGaze`]).
+    Script,
+    /// The script's timeline with fixations drawn from the central bias of scene viewing
+    /// ([`central_bias`]).
+    CentralBias,
+    /// The script's timeline with each fixation drawn toward the scene's collisions and motion
+    /// ([`scene_target`]).
+    SceneDriven,
+    /// The shipped EyeLink recording ([`RECORDING`]), replayed in a loop.
+    Recorded,
+}
+
+impl ViewerModel {
+    /// Name in condition labels and tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Script => "uniform script",
+            Self::CentralBias => "central-bias viewer",
+            Self::SceneDriven => "scene-driven viewer",
+            Self::Recorded => "recorded viewer",
+        }
+    }
+}
+
+/// Clarke and Tatler's (2014, Vision Research 102: 41-51) baseline for image-independent fixation
+/// placement in scene viewing: a Gaussian about the screen centre with horizontal variance 0.22
+/// and vertical variance 0.45 times that, in units where the screen's width spans [-1, 1]. As
+/// standard deviations in fractions of the screen's width and height (`aspect` = width / height).
+pub fn central_bias(aspect: f64) -> Placement {
+    const VAR_X: f64 = 0.22;
+    const NU: f64 = 0.45;
+    // A half-width is one unit: a fraction of the width is half a unit, a fraction of the height
+    // half a unit times the aspect.
+    Placement::CentralBias {
+        sd_x: VAR_X.sqrt() / 2.0,
+        sd_y: (NU * VAR_X).sqrt() / 2.0 * aspect,
+    }
+}
+
+/// The scene-driven viewer's saliency rule, stated in the protocol: a new fixation goes, with this
+/// probability, to a real collision of the frame (one of those on screen, uniformly; where its
+/// two bodies' centres meet), and otherwise to a body drawn with probability proportional to its
+/// speed on screen. Collisions and motion are what this stimulus offers the eye; there is no
+/// measured saliency model of it.
+pub const SCENE_COLLISION_SHARE: f64 = 0.6;
+
+/// The scene-driven viewer lands its saccades with Gaussian error of this standard deviation per
+/// axis, degrees of visual angle (saccadic landing scatter is of the order of 10% of the
+/// amplitude; half a degree is a typical such error for the amplitudes here).
+pub const SCENE_LANDING_SD_DEG: f64 = 0.5;
+
+/// The next fixation of the scene-driven viewer on this frame ([`SCENE_COLLISION_SHARE`]):
+/// `colliding(k)` says whether candidate pair `k` truly collides; `px_per_deg` converts the
+/// landing error. Normalised screen position, clamped to the screen; the screen centre if nothing
+/// is on screen.
+pub fn scene_target(
+    rng: &mut SplitMix64,
+    camera: &Camera,
+    world: &World,
+    candidates: &[(u32, u32)],
+    colliding: &dyn Fn(usize) -> bool,
+    px_per_deg: f64,
+) -> [f64; 2] {
+    let (w, h) = (
+        f64::from(camera.display.width_px),
+        f64::from(camera.display.height_px),
+    );
+    let on_screen = |p: [f64; 2]| (0.0..=w).contains(&p[0]) && (0.0..=h).contains(&p[1]);
+    let pick = rng.next_f64();
+    let mut target = None;
+    if pick < SCENE_COLLISION_SHARE {
+        let hits: Vec<[f64; 2]> = candidates
+            .iter()
+            .enumerate()
+            .filter(|&(k, _)| colliding(k))
+            .map(|(_, &(a, b))| {
+                let (pa, pb) = (world.position[a as usize], world.position[b as usize]);
+                camera.project((pa + pb) * 0.5)
+            })
+            .filter(|&p| on_screen(p))
+            .collect();
+        if !hits.is_empty() {
+            let k = ((rng.next_f64() * hits.len() as f64) as usize).min(hits.len() - 1);
+            target = Some(hits[k]);
+        }
+    }
+    let target = target.unwrap_or_else(|| {
+        // Speed on screen: the velocity across the line of sight, scaled by the projection.
+        let focal = camera.focal_px();
+        let speeds: Vec<(f64, [f64; 2])> = world
+            .position
+            .iter()
+            .zip(&world.velocity)
+            .filter_map(|(&p, &v)| {
+                let at = camera.project(p);
+                let depth = camera.eye.z - p.z;
+                (on_screen(at) && depth > 0.0).then(|| (v.x.hypot(v.y) * focal / depth, at))
+            })
+            .collect();
+        let total: f64 = speeds.iter().map(|s| s.0).sum();
+        if total <= 0.0 || !total.is_finite() {
+            return [0.5 * w, 0.5 * h];
+        }
+        let mut left = rng.next_f64() * total;
+        for &(s, at) in &speeds {
+            left -= s;
+            if left <= 0.0 {
+                return at;
+            }
+        }
+        speeds.last().map_or([0.5 * w, 0.5 * h], |s| s.1)
+    });
+    let (gx, gy) = gaussian_pair(rng);
+    let sd_px = SCENE_LANDING_SD_DEG * px_per_deg;
+    [
+        ((target[0] + gx * sd_px) / w).clamp(0.0, 1.0),
+        ((target[1] + gy * sd_px) / h).clamp(0.0, 1.0),
+    ]
+}
+
+/// The shipped eye-tracker recording the recorded viewer replays (EyeLink, 1,000 Hz, left eye,
+/// 1920x1080; `data/gaze/README.md`).
+pub const RECORDING: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../../data/gaze/eyelink-1000hz-left.samples.csv"
+);
+
+/// What a scene-driven viewer looks at when it chooses: the frame's bodies, candidates and which
+/// of them truly collide.
+pub struct SceneGlance<'a> {
+    /// Camera and display.
+    pub camera: &'a Camera,
+    /// Bodies.
+    pub world: &'a World,
+    /// Candidate pairs.
+    pub candidates: &'a [(u32, u32)],
+    /// Whether candidate `k` truly collides.
+    pub colliding: &'a dyn Fn(usize) -> bool,
+    /// Pixels per degree at the screen centre.
+    pub px_per_deg: f64,
+}
+
+impl std::fmt::Debug for SceneGlance<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SceneGlance")
+            .field("bodies", &self.world.len())
+            .field("candidates", &self.candidates.len())
+            .field("px_per_deg", &self.px_per_deg)
+            .finish_non_exhaustive()
+    }
+}
+
+/// One viewer model's gaze over a run, frame by frame: the fixation at simulated time `t`. Built
+/// afresh for each replay of a run's frames, so every replay sees the same gaze.
+#[derive(Debug, Clone)]
+pub enum ViewerTrack {
+    /// [`ViewerModel::Script`]: the caller's gaze.
+    Script,
+    /// A timeline of the script's kind with its own placement.
+    Timeline(Viewer),
+    /// A recording.
+    Recorded(RecordedGaze),
+}
+
+impl ViewerTrack {
+    /// The track of `model` for the run seeded by `seed` on a screen of this `aspect` (width /
+    /// height); the recording, if needed, from `recording`.
+    pub fn new(
+        model: ViewerModel,
+        seed: u64,
+        aspect: f64,
+        recording: Option<&RecordedGaze>,
+    ) -> Result<Self, GazeError> {
+        Ok(match model {
+            ViewerModel::Script => Self::Script,
+            ViewerModel::CentralBias => {
+                Self::Timeline(Viewer::with_placement(seed, central_bias(aspect)))
+            }
+            ViewerModel::SceneDriven => {
+                Self::Timeline(Viewer::with_placement(seed, Placement::Chosen))
+            }
+            ViewerModel::Recorded => match recording {
+                Some(r) => Self::Recorded(r.clone()),
+                None => Self::Recorded(RecordedGaze::from_csv(Path::new(RECORDING))?),
+            },
+        })
+    }
+
+    /// The fixation at `t`: `script` answers for [`ViewerModel::Script`]; a scene-driven viewer
+    /// starting a saccade chooses its target from `scene`.
+    pub fn at(
+        &mut self,
+        t: f64,
+        script: &mut dyn FnMut(f64) -> Fixation,
+        scene: &SceneGlance<'_>,
+    ) -> Fixation {
+        match self {
+            Self::Script => script(t),
+            Self::Timeline(v) => {
+                let g = v.at_choosing(t, &mut |rng, _| {
+                    scene_target(
+                        rng,
+                        scene.camera,
+                        scene.world,
+                        scene.candidates,
+                        scene.colliding,
+                        scene.px_per_deg,
+                    )
+                });
+                Fixation::at(g.x, g.y)
+            }
+            Self::Recorded(r) => r.at(t.max(0.0)).unwrap_or(Fixation::at(0.5, 0.5)),
+        }
     }
 }
 
@@ -201,6 +426,93 @@ mod tests {
             fa.iter()
                 .all(|f| (0.0..=1.0).contains(&f.x) && (0.0..=1.0).contains(&f.y))
         );
+    }
+
+    /// The scene-driven viewer looks at the frame's collisions (within its landing error) more
+    /// often than its share says it aims for them by chance, and at moving bodies otherwise; the
+    /// same seed gives the same gaze, and every model's track stays on screen.
+    #[test]
+    fn scene_driven_viewer_looks_where_the_collisions_are() {
+        use foveal_engine::{SceneConfig, SimConfig, Simulation};
+        let mut sim = Simulation::new(SimConfig {
+            scene: SceneConfig::paper(300, 7),
+            ..SimConfig::default()
+        })
+        .expect("scene");
+        for _ in 0..30 {
+            sim.step(None, &foveal_engine::FrozenClock);
+        }
+        let hits: std::collections::HashSet<(u32, u32)> =
+            sim.exact_colliding_pairs().into_iter().collect();
+        let input = sim.frame_input();
+        let slot_hits: Vec<bool> = input
+            .candidates
+            .iter()
+            .map(|&p| hits.contains(&sim.id_pair(p)))
+            .collect();
+        assert!(slot_hits.iter().any(|&h| h), "no collision in the frame");
+        let colliding = |k: usize| slot_hits[k];
+        let camera = input.viewer;
+        let px_per_deg = camera.display.pixels_per_degree();
+        let points: Vec<[f64; 2]> = input
+            .candidates
+            .iter()
+            .enumerate()
+            .filter(|&(k, _)| slot_hits[k])
+            .map(|(_, &(a, b))| {
+                let w = input.world;
+                camera.project((w.position[a as usize] + w.position[b as usize]) * 0.5)
+            })
+            .collect();
+        let mut rng = SplitMix64::new(11);
+        let draws = 2_000;
+        let near = (0..draws)
+            .filter(|_| {
+                let t = scene_target(
+                    &mut rng,
+                    camera,
+                    input.world,
+                    input.candidates,
+                    &colliding,
+                    px_per_deg,
+                );
+                let px = camera.to_pixels(t[0], t[1]);
+                points
+                    .iter()
+                    .any(|p| camera.display.visual_angle_deg(*p, px) < 2.0)
+            })
+            .count();
+        let share = near as f64 / f64::from(draws);
+        assert!(share > 0.9 * SCENE_COLLISION_SHARE, "{share}");
+        let glance = SceneGlance {
+            camera,
+            world: input.world,
+            candidates: input.candidates,
+            colliding: &colliding,
+            px_per_deg,
+        };
+        for model in [
+            ViewerModel::Script,
+            ViewerModel::CentralBias,
+            ViewerModel::SceneDriven,
+            ViewerModel::Recorded,
+        ] {
+            let track = |seed| {
+                let mut tr = ViewerTrack::new(model, seed, 16.0 / 9.0, None).expect("track");
+                let mut script = ScriptedGaze::new(seed);
+                (0..300)
+                    .map(|i| tr.at(f64::from(i) / 60.0, &mut |t| script.at(t), &glance))
+                    .collect::<Vec<_>>()
+            };
+            let a = track(3);
+            assert_eq!(a, track(3), "{model:?}");
+            assert!(
+                a.iter()
+                    .all(|f| (0.0..=1.0).contains(&f.x) && (0.0..=1.0).contains(&f.y)),
+                "{model:?}"
+            );
+            assert!(a.windows(2).any(|w| w[0] != w[1]), "{model:?} never moves");
+        }
     }
 
     #[test]

@@ -167,6 +167,7 @@ fn write_part(
     std::fs::create_dir_all(&figs_dir).map_err(|e| BenchError::io(&figs_dir, e))?;
     let figures: Vec<(String, Figure)> = match part {
         Part::Table => table_figures(cfg, &gs),
+        Part::F1 => figures::f1_figures(cfg, &gs),
         Part::Curves => curve_figures(cfg, &gs),
     };
     let mut fig_md = String::new();
@@ -195,9 +196,12 @@ fn write_part(
     } else {
         part_cfg.table = false;
     }
-    let _ = writeln!(md, "## Headlines\n\n{}", report::headlines(&part_cfg, &gs));
+    if part != Part::F1 {
+        let _ = writeln!(md, "## Headlines\n\n{}", report::headlines(&part_cfg, &gs));
+    }
     md.push_str(&match part {
         Part::Table => report::table_markdown(cfg, &gs),
+        Part::F1 => report::f1_markdown(cfg, &gs),
         Part::Curves => report::curves_markdown(cfg, &gs),
     });
     let _ = writeln!(
@@ -264,7 +268,7 @@ impl StudyConfig {
                 cost_s: shard::closed_loop_cost_s(self, spec),
                 kind: shard::CellKind::ClosedLoop(i),
                 group: None,
-                serial: spec.part == Part::Table || self.jobs <= 1,
+                serial: spec.part.is_timed() || self.jobs <= 1,
             })
             .collect();
         let parts = self.open_loop_parts();
@@ -513,6 +517,7 @@ pub fn merge_study(
         ..StudyOutput::default()
     };
     write_part(cfg, Part::Table, &merged.closed_loop, &mut out)?;
+    write_part(cfg, Part::F1, &merged.closed_loop, &mut out)?;
     write_part(cfg, Part::Curves, &merged.closed_loop, &mut out)?;
     if !refs.is_empty() {
         let written = open_loop::write_parts(&refs, &merged.open_loop, &merged.stamp)?;

@@ -817,6 +817,10 @@ struct StudyProtocol {
     /// Skip the sensitivity grid (run with the open-loop part on its frames; see `open-loop --grid`).
     #[arg(long)]
     no_grid: bool,
+    /// Skip the paper's F1 case (sorted-sequential against round-robin under F1, figures 5(b)
+    /// and 6(a)).
+    #[arg(long)]
+    no_f1: bool,
 }
 
 impl StudyArgs {
@@ -869,6 +873,9 @@ impl StudyProtocol {
         }
         if self.no_grid || c.open_loop.is_none() {
             c.grid = None;
+        }
+        if self.no_f1 || self.curves {
+            c.f1 = false;
         }
         if self.curves || self.with_curves {
             c.curves.get_or_insert_with(CurvesConfig::default);

@@ -19,7 +19,9 @@
 //!
 //! A condition fixes the scheduling model, the measuring model and what the scheduler is told about
 //! the gaze: the viewer's fixation, or the screen centre (a control: the same viewer, measured at
-//! the true fixation, with a scheduler that has no eye tracker).
+//! the true fixation, with a scheduler that has no eye tracker); and who the viewer is
+//! ([`ViewerModel`]: the uniform script, a central-bias or scene-driven viewer, or a recording).
+//! Every cell reports the paper's estimated P beside the audited true P.
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -42,10 +44,11 @@ use crate::error::BenchError;
 use foveal_gaze::rng::SplitMix64;
 
 use crate::clock::InstantClock;
-use crate::gaze::ScriptedGaze;
+use crate::gaze::{RecordedGaze, SceneGlance, ScriptedGaze, ViewerModel, ViewerTrack};
 use crate::plots::{Figure, PAPER_P_RATIO, Series, panel};
 use crate::ratio::{RatioCi, p_below};
 use crate::stats::{Interval, MeanCi};
+use foveal_gaze::viewer::gaussian_pair;
 
 /// A scheduler under test: a kind and, for the priced one, its ablation switches.
 #[derive(Debug, Clone, PartialEq)]
@@ -133,6 +136,8 @@ pub struct Condition {
     pub measure_model: PerceptualModel,
     /// What the schedulers are told about the gaze.
     pub feed: GazeFeed,
+    /// Who watches: where the true fixation, which P is measured about, comes from.
+    pub viewer: ViewerModel,
     /// Saccadic suppression: frames during which the viewer's gaze moves faster than
     /// [`SACCADE_DEG_PER_S`] are not counted (vision is suppressed during saccades). The
     /// schedulers still run on them, so every condition sees the same sequence of frames.
@@ -294,6 +299,7 @@ impl OpenLoopConfig {
                     schedule_model: f2(c),
                     measure_model: f2(c),
                     feed,
+                    viewer: ViewerModel::Script,
                     suppress_saccades: false,
                     schedulers: if feed == GazeFeed::Viewer {
                         all.clone()
@@ -304,6 +310,39 @@ impl OpenLoopConfig {
                             SchedulerSpec::plain(SchedulerKind::Priced),
                         ]
                     },
+                });
+            }
+        }
+        // Who watches (C = 5): beside the uniform script above, a central-bias viewer, a
+        // scene-driven one and the shipped recording, each with its screen-centre control, for
+        // the headlines' schedulers. Only the viewer-fed runs are new: the centre-fed ones and
+        // round-robin schedule the same for every viewer and are measured about each.
+        for v in [
+            ViewerModel::CentralBias,
+            ViewerModel::SceneDriven,
+            ViewerModel::Recorded,
+        ] {
+            for feed in [GazeFeed::Viewer, GazeFeed::Centre] {
+                let suffix = if feed == GazeFeed::Centre {
+                    ", centre-fed"
+                } else {
+                    ""
+                };
+                conditions.push(Condition {
+                    name: format!("C=5, {}{suffix}", v.name()),
+                    schedule_model: f2(5.0),
+                    measure_model: f2(5.0),
+                    feed,
+                    viewer: v,
+                    suppress_saccades: false,
+                    schedulers: [
+                        SchedulerKind::RoundRobin,
+                        SchedulerKind::PriorityOnly,
+                        SchedulerKind::Priced,
+                    ]
+                    .into_iter()
+                    .map(SchedulerSpec::plain)
+                    .collect(),
                 });
             }
         }
@@ -322,6 +361,7 @@ impl OpenLoopConfig {
                     schedule_model: s,
                     measure_model: f2(m),
                     feed: GazeFeed::Viewer,
+                    viewer: ViewerModel::Script,
                     suppress_saccades: false,
                     schedulers: pair.clone(),
                 });
@@ -346,6 +386,7 @@ impl OpenLoopConfig {
                 schedule_model: f2(5.0),
                 measure_model: f2(5.0),
                 feed,
+                viewer: ViewerModel::Script,
                 suppress_saccades: suppress,
                 schedulers: pair.clone(),
             });
@@ -415,6 +456,7 @@ impl OpenLoopConfig {
                 schedule_model: m,
                 measure_model: m,
                 feed: GazeFeed::Viewer,
+                viewer: ViewerModel::Script,
                 suppress_saccades: false,
                 schedulers: schedulers.clone(),
             })
@@ -469,6 +511,9 @@ impl OpenLoopConfig {
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Cell {
     pub(crate) true_p: f64,
+    /// The paper's estimated P (section 3: each deemed pair's gap bound from its evidence), with
+    /// the condition's measuring model about the same fixation.
+    pub(crate) est_p: f64,
     pub(crate) tests: f64,
     pub(crate) prioritise_ms: f64,
 }
@@ -623,6 +668,7 @@ struct ScheduleRun {
     spec: SchedulerSpec,
     schedule_model: PerceptualModel,
     feed: GazeFeed,
+    viewer: ViewerModel,
     /// Index into the union of the parts' budgets.
     budget: usize,
     /// Its configuration (the collider is built for its budget's batch only).
@@ -631,6 +677,29 @@ struct ScheduleRun {
     collider: Option<Collider>,
     /// The (part, condition, budget, scheduler) cells this run serves.
     cells: Vec<(usize, usize, usize, usize)>,
+}
+
+/// What a scheduling run reads of its condition: scheduling model, gaze feed, viewer.
+type ScheduleKey = (PerceptualModel, GazeFeed, ViewerModel);
+
+/// What a scheduling run of `spec` in condition `c` reads: its scheduling model, gaze feed and
+/// viewer. Round-robin and sequential read none of them, and a run fed the screen centre reads no
+/// viewer, so cells that differ only there share one run.
+fn schedule_key(spec: &SchedulerSpec, c: &Condition) -> ScheduleKey {
+    if matches!(
+        spec.kind,
+        SchedulerKind::RoundRobin | SchedulerKind::Sequential
+    ) {
+        (
+            PerceptualModel::default(),
+            GazeFeed::Viewer,
+            ViewerModel::Script,
+        )
+    } else if c.feed == GazeFeed::Centre {
+        (c.schedule_model, GazeFeed::Centre, ViewerModel::Script)
+    } else {
+        (c.schedule_model, c.feed, c.viewer)
+    }
 }
 
 /// How many distinct scheduling runs every frame of parts run together makes (cells that would
@@ -643,26 +712,22 @@ pub fn schedule_runs(parts: &[&OpenLoopConfig]) -> usize {
         SchedulerKind,
         PricedOptions,
         Option<f64>,
-        PerceptualModel,
-        GazeFeed,
+        ScheduleKey,
     )> = Vec::new();
     for p in parts {
         for c in &p.conditions {
             for b in &p.budgets {
                 let ub = index_of(&mut budgets, *b);
                 for spec in &c.schedulers {
-                    let blind = matches!(
-                        spec.kind,
-                        SchedulerKind::RoundRobin | SchedulerKind::Sequential
-                    );
-                    let (model, feed) = if blind {
-                        (PerceptualModel::default(), GazeFeed::Viewer)
-                    } else {
-                        (c.schedule_model, c.feed)
-                    };
                     index_of(
                         &mut keys,
-                        (ub, spec.kind, spec.priced, spec.threshold_deg, model, feed),
+                        (
+                            ub,
+                            spec.kind,
+                            spec.priced,
+                            spec.threshold_deg,
+                            schedule_key(spec, c),
+                        ),
                     );
                 }
             }
@@ -757,14 +822,31 @@ pub fn run_frames_parts(
                 .collect()
         })
         .collect();
-    // True weights and bound items per distinct measuring model (conditions share them).
-    let mut models: Vec<PerceptualModel> = Vec::new();
+    // The viewers watching, and the recording if one of them replays it.
+    let mut viewers: Vec<ViewerModel> = Vec::new();
+    for p in parts {
+        for c in &p.conditions {
+            index_of(&mut viewers, c.viewer);
+        }
+    }
+    let recording = if viewers.contains(&ViewerModel::Recorded) {
+        Some(RecordedGaze::from_csv(std::path::Path::new(
+            crate::gaze::RECORDING,
+        ))?)
+    } else {
+        None
+    };
+    // True weights and bound items per distinct (measuring model, viewer) (conditions share them).
+    let mut models: Vec<(PerceptualModel, usize)> = Vec::new();
     let model_of: Vec<Vec<usize>> = parts
         .iter()
         .map(|p| {
             p.conditions
                 .iter()
-                .map(|c| index_of(&mut models, c.measure_model))
+                .map(|c| {
+                    let v = index_of(&mut viewers, c.viewer);
+                    index_of(&mut models, (c.measure_model, v))
+                })
                 .collect()
         })
         .collect();
@@ -778,15 +860,7 @@ pub fn run_frames_parts(
             for (bi, &ub) in budget_of[pi].iter().enumerate() {
                 let mut per_sched = Vec::new();
                 for (si, spec) in c.schedulers.iter().enumerate() {
-                    let blind = matches!(
-                        spec.kind,
-                        SchedulerKind::RoundRobin | SchedulerKind::Sequential
-                    );
-                    let (model, feed) = if blind {
-                        (PerceptualModel::default(), GazeFeed::Viewer)
-                    } else {
-                        (c.schedule_model, c.feed)
-                    };
+                    let (model, feed, viewer) = schedule_key(spec, c);
                     let same = |r: &ScheduleRun| {
                         r.budget == ub
                             && r.spec.kind == spec.kind
@@ -794,6 +868,7 @@ pub fn run_frames_parts(
                             && r.spec.threshold_deg == spec.threshold_deg
                             && r.schedule_model == model
                             && r.feed == feed
+                            && r.viewer == viewer
                     };
                     let u = match runs.iter().position(same) {
                         Some(u) => u,
@@ -811,6 +886,7 @@ pub fn run_frames_parts(
                                 spec: spec.clone(),
                                 schedule_model: model,
                                 feed,
+                                viewer,
                                 budget: ub,
                                 sim: sc,
                                 collider: None,
@@ -922,15 +998,18 @@ pub fn run_frames_parts(
         let display = viewer.display;
         let px_per_deg =
             display.viewing_distance_cm * 1f64.to_radians().tan() / display.pixel_pitch_cm();
+        let aspect = f64::from(display.width_px) / f64::from(display.height_px);
         let mut noise = SplitMix64::new(seed ^ 0x0015_E5EE_D000_0000);
+        // Each replay of the frames gets the same gaze: every track starts afresh.
+        let mut tracks = viewers
+            .iter()
+            .map(|&v| ViewerTrack::new(v, seed, aspect, recording.as_ref()))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut fixes: Vec<Fixation> = Vec::with_capacity(viewers.len());
+        let mut saccade: Vec<bool> = Vec::with_capacity(viewers.len());
+        let mut est: Vec<(usize, f64)> = Vec::new();
         for f in 0..frames {
             let t = f64::from(cfg.warmup + cfg.timing_frames + f) * dt;
-            let fixation = gaze(t);
-            let before = gaze(t - dt);
-            let in_saccade = display.visual_angle_deg(
-                viewer.to_pixels(fixation.x, fixation.y),
-                viewer.to_pixels(before.x, before.y),
-            ) > SACCADE_DEG_PER_S * dt;
             let (g1, g2) = gaussian_pair(&mut noise);
             let frame_tests = source.step(None, &FrozenClock).sphere_tests;
             if first {
@@ -949,12 +1028,38 @@ pub fn run_frames_parts(
                 }
             }
             clairvoyant::truths(input.tree, input.world, input.candidates, &mut truths);
-            let fix_px = input.viewer.to_pixels(fixation.x, fixation.y);
-            for (mi, model) in models.iter().enumerate() {
+            // Where each viewer looks (a scene-driven one choosing from this frame's truths), and
+            // whether it is in a saccade.
+            let colliding = |k: usize| truths.get(k).is_some_and(|t| t.colliding);
+            let glance = SceneGlance {
+                camera: input.viewer,
+                world: input.world,
+                candidates: input.candidates,
+                colliding: &colliding,
+                px_per_deg,
+            };
+            fixes.clear();
+            saccade.clear();
+            for tr in &mut tracks {
+                let before = tr.at(t - dt, &mut *gaze, &glance);
+                let now = tr.at(t, &mut *gaze, &glance);
+                fixes.push(now);
+                saccade.push(
+                    display.visual_angle_deg(
+                        viewer.to_pixels(now.x, now.y),
+                        viewer.to_pixels(before.x, before.y),
+                    ) > SACCADE_DEG_PER_S * dt,
+                );
+            }
+            let px_of = |v: usize| {
+                let f = fixes[v];
+                input.viewer.to_pixels(f.x, f.y)
+            };
+            for (mi, &(model, v)) in models.iter().enumerate() {
                 let view = FrameView {
                     viewer: input.viewer,
-                    fixation_px: fix_px,
-                    model: *model,
+                    fixation_px: px_of(v),
+                    model,
                     uncertainty_deg: 0.0,
                 };
                 let w = &mut weights[mi];
@@ -967,6 +1072,7 @@ pub fn run_frames_parts(
             }
             for (pi, p) in parts.iter().enumerate() {
                 for (ci, c) in p.conditions.iter().enumerate() {
+                    let in_saccade = saccade[models[model_of[pi][ci]].1];
                     let counts = !(c.suppress_saccades && in_saccade);
                     count[pi][ci] = counts;
                     if counts && first {
@@ -975,7 +1081,7 @@ pub fn run_frames_parts(
                     }
                 }
             }
-            let shifted = |dx_deg: f64, dy_deg: f64| {
+            let shifted = |fixation: Fixation, dx_deg: f64, dy_deg: f64| {
                 let (w, h) = (f64::from(display.width_px), f64::from(display.height_px));
                 Fixation::at(
                     (fixation.x + dx_deg * px_per_deg / w).clamp(0.0, 1.0),
@@ -995,12 +1101,17 @@ pub fn run_frames_parts(
                 // Rotate the order so no scheduler always runs first into cold caches.
                 let u = here[(j + f as usize) % here.len()];
                 let run = &mut runs[u];
+                let vi = viewers.iter().position(|&v| v == run.viewer).unwrap_or(0);
+                let fixation = fixes.get(vi).copied().unwrap_or(centre);
                 let fed = match run.feed {
                     GazeFeed::Viewer => fixation,
                     GazeFeed::Centre => centre,
-                    GazeFeed::Bias { deg } => shifted(deg, 0.0),
-                    GazeFeed::Noise { sd_deg } => shifted(sd_deg * g1, sd_deg * g2),
-                    GazeFeed::Latency { ms } => gaze((t - ms * 1e-3).max(0.0)),
+                    GazeFeed::Bias { deg } => shifted(fixation, deg, 0.0),
+                    GazeFeed::Noise { sd_deg } => shifted(fixation, sd_deg * g1, sd_deg * g2),
+                    GazeFeed::Latency { ms } => match tracks.get_mut(vi) {
+                        Some(tr) => tr.at((t - ms * 1e-3).max(0.0), &mut *gaze, &glance),
+                        None => centre,
+                    },
                 };
                 let Some(collider) = run.collider.as_mut() else {
                     continue;
@@ -1015,10 +1126,36 @@ pub fn run_frames_parts(
                 }
                 collider.collide(&input, Some(fed), fb, clk, &mut r, &mut prof);
                 run_tests[u] = r.sphere_tests;
+                est.clear();
                 for &(pi, ci, bi, si) in &run.cells {
                     if !count[pi][ci] {
                         continue;
                     }
+                    // The paper's estimate, once per (measuring model, viewer) this run serves.
+                    let mi = model_of[pi][ci];
+                    let ep = match est.iter().find(|e| e.0 == mi) {
+                        Some(&(_, ep)) => ep,
+                        None => {
+                            let (model, v) = models[mi];
+                            let view = FrameView {
+                                viewer: input.viewer,
+                                fixation_px: px_of(v),
+                                model,
+                                uncertainty_deg: 0.0,
+                            };
+                            let ep = foveal_engine::metrics::measure(
+                                collider.narrow(),
+                                input.tree,
+                                input.world,
+                                Some(&view),
+                                None,
+                                1,
+                            )
+                            .p;
+                            est.push((mi, ep));
+                            ep
+                        }
+                    };
                     let tp: f64 = collider
                         .pairs()
                         .iter()
@@ -1030,6 +1167,7 @@ pub fn run_frames_parts(
                         .sum();
                     let cell = &mut cells[pi][ci][bi][si];
                     cell.true_p += tp;
+                    cell.est_p += ep;
                     cell.tests += r.sphere_tests as f64;
                     cell.prioritise_ms += prof.prioritise_ns as f64 * 1e-6;
                 }
@@ -1075,6 +1213,7 @@ pub fn run_frames_parts(
             let k = 1.0 / f64::from(counted[pi][ci].max(1));
             for c in cells[ci].iter_mut().flatten() {
                 c.true_p *= k;
+                c.est_p *= k;
                 c.tests *= k;
                 c.prioritise_ms *= k;
             }
@@ -1114,14 +1253,6 @@ fn index_of<T: PartialEq>(v: &mut Vec<T>, x: T) -> usize {
 }
 
 /// Two independent standard normal variates (Box-Muller).
-fn gaussian_pair(rng: &mut SplitMix64) -> (f64, f64) {
-    let u = rng.next_f64().max(f64::MIN_POSITIVE);
-    let v = rng.next_f64();
-    let r = (-2.0 * u.ln()).sqrt();
-    let a = std::f64::consts::TAU * v;
-    (r * a.cos(), r * a.sin())
-}
-
 /// Run every (N, seed) on `cfg.jobs` threads; results in (N, seed) order.
 pub fn run(cfg: &OpenLoopConfig) -> Result<Vec<RunResult>, BenchError> {
     let mut v = run_parts(&[cfg])?;
@@ -1220,6 +1351,8 @@ pub struct SummaryRow {
     pub true_p: MeanCi,
     /// Mean true P over round-robin's, paired by seed ([`RatioCi`]).
     pub ratio_rr: RatioCi,
+    /// The same with the paper's estimated P (each scheduler's and round-robin's own estimate).
+    pub est_ratio_rr: RatioCi,
     /// Share of the achievable reduction, Σ(P_rr - P_s) / Σ(P_rr - P_bound), paired by seed.
     pub share: RatioCi,
     /// Sphere tests per frame over round-robin's, paired by seed.
@@ -1246,9 +1379,11 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
                 .position(|s| s.kind == SchedulerKind::RoundRobin);
             for (bi, b) in cfg.budgets.iter().enumerate() {
                 let p_rr = |r: &RunResult| rr.map_or(f64::NAN, |j| r.cells[ci][bi][j].true_p);
+                let e_rr = |r: &RunResult| rr.map_or(f64::NAN, |j| r.cells[ci][bi][j].est_p);
                 let t_rr = |r: &RunResult| rr.map_or(f64::NAN, |j| r.cells[ci][bi][j].tests);
                 let mut push = |label: &str,
                                 p: &dyn Fn(&RunResult) -> f64,
+                                e: &dyn Fn(&RunResult) -> f64,
                                 t: &dyn Fn(&RunResult) -> f64,
                                 pm: &dyn Fn(&RunResult) -> f64| {
                     let pairs: Vec<(f64, f64)> = rs.iter().map(|r| (p(r), p_rr(r))).collect();
@@ -1259,6 +1394,7 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
                         scheduler: label.into(),
                         true_p: MeanCi::of(rs.iter().map(|r| p(r))),
                         ratio_rr: RatioCi::of(pairs.iter().copied()),
+                        est_ratio_rr: RatioCi::of(rs.iter().map(|r| (e(r), e_rr(r)))),
                         share: RatioCi::of(
                             rs.iter()
                                 .map(|r| (p_rr(r) - p(r), p_rr(r) - r.bound[ci][bi])),
@@ -1273,6 +1409,7 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
                     push(
                         &s.label,
                         &|r| r.cells[ci][bi][j].true_p,
+                        &|r| r.cells[ci][bi][j].est_p,
                         &|r| r.cells[ci][bi][j].tests,
                         &|r| r.cells[ci][bi][j].prioritise_ms,
                     );
@@ -1286,9 +1423,13 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
                         .copied()
                         .unwrap_or(f64::NAN)
                 };
-                push("clairvoyant", &|r| r.bound[ci][bi], &bound_tests, &|_| {
-                    f64::NAN
-                });
+                push(
+                    "clairvoyant",
+                    &|r| r.bound[ci][bi],
+                    &|_| f64::NAN,
+                    &bound_tests,
+                    &|_| f64::NAN,
+                );
             }
         }
     }
@@ -1298,7 +1439,7 @@ pub fn summarise(cfg: &OpenLoopConfig, runs: &[RunResult]) -> Vec<SummaryRow> {
 /// CSV of the per-run means.
 pub fn runs_csv(cfg: &OpenLoopConfig, runs: &[RunResult]) -> String {
     let mut s = String::from(
-        "n,seed,frames,exact_narrow_ms,exact_tests,condition,budget,scheduler,true_p,tests,prioritise_ms,bound,all_deemed,base_p05_ms,base_p95_ms,ns_per_test_p05,ns_per_test_p95\n",
+        "n,seed,frames,exact_narrow_ms,exact_tests,condition,budget,scheduler,true_p,est_p,tests,prioritise_ms,bound,all_deemed,base_p05_ms,base_p95_ms,ns_per_test_p05,ns_per_test_p95\n",
     );
     for r in runs {
         for (ci, cond) in cfg.conditions.iter().enumerate() {
@@ -1307,7 +1448,7 @@ pub fn runs_csv(cfg: &OpenLoopConfig, runs: &[RunResult]) -> String {
                     let c = r.cells[ci][bi][j];
                     let _ = writeln!(
                         s,
-                        "{},{},{},{:.6},{:.1},\"{}\",{},{},{:.6e},{:.1},{:.6},{:.6e},{:.6e},{:.6},{:.6},{:.3},{:.3}",
+                        "{},{},{},{:.6},{:.1},\"{}\",{},{},{:.6e},{:.6e},{:.1},{:.6},{:.6e},{:.6e},{:.6},{:.6},{:.3},{:.3}",
                         r.n,
                         r.seed,
                         r.frames,
@@ -1317,6 +1458,7 @@ pub fn runs_csv(cfg: &OpenLoopConfig, runs: &[RunResult]) -> String {
                         b.label(),
                         sch.label,
                         c.true_p,
+                        c.est_p,
                         c.tests,
                         c.prioritise_ms,
                         r.bound[ci][bi],
@@ -1339,13 +1481,13 @@ pub fn runs_csv(cfg: &OpenLoopConfig, runs: &[RunResult]) -> String {
 pub fn summary_csv(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
     let adjusted = endpoint::secondary_halving(rows, &cfg.primary);
     let mut s = String::from(
-        "n,condition,budget,scheduler,seeds,non_finite,true_p,true_p_ci,ratio_rr,ratio_rr_lo,ratio_rr_hi,share,share_lo,share_hi,tests_rr,tests_rr_lo,tests_rr_hi,prioritise_ms,p_halves,p_halves_holm,primary\n",
+        "n,condition,budget,scheduler,seeds,non_finite,true_p,true_p_ci,ratio_rr,ratio_rr_lo,ratio_rr_hi,est_ratio_rr,est_ratio_rr_lo,est_ratio_rr_hi,share,share_lo,share_hi,tests_rr,tests_rr_lo,tests_rr_hi,prioritise_ms,p_halves,p_halves_holm,primary\n",
     );
     let p = |x: Option<f64>| x.map_or(String::new(), |p| format!("{p:.4e}"));
     for (i, r) in rows.iter().enumerate() {
         let _ = writeln!(
             s,
-            "{},\"{}\",{},{},{},{},{:.6e},{:.3e},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.5},{},{},{}",
+            "{},\"{}\",{},{},{},{},{:.6e},{:.3e},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.5},{},{},{}",
             r.n,
             r.condition,
             r.budget,
@@ -1357,6 +1499,9 @@ pub fn summary_csv(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> String {
             r.ratio_rr.ratio,
             r.ratio_rr.lo,
             r.ratio_rr.hi,
+            r.est_ratio_rr.ratio,
+            r.est_ratio_rr.lo,
+            r.est_ratio_rr.hi,
             r.share.ratio,
             r.share.lo,
             r.share.hi,
@@ -1504,9 +1649,10 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
         s,
         "Cells: mean true P over round-robin's on the same frames, paired by seed, with its 95% \
          bootstrap interval over seeds in brackets; after the slash the share of the achievable \
-         reduction Σ(P_rr - P_s) / Σ(P_rr - P_clairvoyant), same form. Wall-clock columns add \
-         the sphere tests done over round-robin's. n (seeds) is in each heading; a cell that \
-         counted fewer says so.\n"
+         reduction Σ(P_rr - P_s) / Σ(P_rr - P_clairvoyant), same form; then `est`, the same \
+         ratio on the paper's estimated P (section 3: each deemed pair's gap bounded from its \
+         evidence), which is what the paper plotted. Wall-clock columns add the sphere tests done \
+         over round-robin's. n (seeds) is in each heading; a cell that counted fewer says so.\n"
     );
     s.push_str(&endpoint::markdown(&cfg.primary, rows));
     for &n in &cfg.ns {
@@ -1587,6 +1733,9 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
                         continue;
                     };
                     let mut cell = format!(" {} / {}", r.ratio_rr.fmt_cell(2), r.share.fmt_cell(2));
+                    if r.est_ratio_rr.ratio.is_finite() {
+                        let _ = write!(cell, "; est {:.2}", r.est_ratio_rr.ratio);
+                    }
                     if matches!(b, Budget::Wall(_)) && r.tests_rr.ratio.is_finite() {
                         let _ = write!(cell, "; tests {}", r.tests_rr.fmt_cell(2));
                     }
@@ -1595,10 +1744,41 @@ pub fn markdown(cfg: &OpenLoopConfig, runs: &[RunResult], rows: &[SummaryRow]) -
                 s.push('\n');
             }
             s.push('\n');
+            s.push_str(&rank_disagreements(rows, n, &cond.name));
         }
     }
     s.push_str(&halving_markdown(cfg, rows));
     s
+}
+
+/// A sentence naming the cells of one table where the paper's estimated P and the audited true P
+/// put a scheduler on opposite sides of round-robin, each beyond its 95% interval (one ratio's
+/// interval wholly below 1, the other's wholly above): there the paper's measure would rank the
+/// two schedulers the other way. Empty where they agree or either could lie on 1.
+fn rank_disagreements(rows: &[SummaryRow], n: u32, condition: &str) -> String {
+    let flips: Vec<String> = rows
+        .iter()
+        .filter(|r| r.n == n && r.condition == condition)
+        .filter(|r| r.scheduler != "round-robin" && r.scheduler != "clairvoyant")
+        .filter(|r| {
+            let (e, t) = (&r.est_ratio_rr, &r.ratio_rr);
+            (e.hi < 1.0 && t.lo > 1.0) || (e.lo > 1.0 && t.hi < 1.0)
+        })
+        .map(|r| {
+            format!(
+                "{} at {} (estimated {:.2}, true {:.2})",
+                r.scheduler, r.budget, r.est_ratio_rr.ratio, r.ratio_rr.ratio
+            )
+        })
+        .collect();
+    if flips.is_empty() {
+        return String::new();
+    }
+    format!(
+        "The estimate and the truth rank these against round-robin the other way (both 95% \
+         intervals clear of 1): {}.\n\n",
+        flips.join("; ")
+    )
 }
 
 /// Where each scheduler halves round-robin's true P, as secondary findings: per N and scheduler,
@@ -1897,6 +2077,110 @@ mod tests {
         assert!(md.contains("halves round-robin's true P"));
     }
 
+    /// Every viewer model runs: each condition's cells are measured about its own viewer's
+    /// fixation (the same scheduler, told different gazes, deems different pairs), centre-fed
+    /// and round-robin runs are shared across viewers, and the paper's estimate is reported
+    /// beside the truth: positive wherever the truth is, zero where the budget settles every pair.
+    #[test]
+    fn viewer_models_are_measured_about_their_own_gaze_with_the_estimate_beside() {
+        let mut cfg = tiny(6, 0, vec![Budget::Tests(0.05), Budget::Tests(100.0)]);
+        let base = cfg.conditions[0].clone();
+        cfg.conditions.clear();
+        let models = [
+            ViewerModel::Script,
+            ViewerModel::CentralBias,
+            ViewerModel::SceneDriven,
+            ViewerModel::Recorded,
+        ];
+        for v in models {
+            for feed in [GazeFeed::Viewer, GazeFeed::Centre] {
+                cfg.conditions.push(Condition {
+                    name: format!("{} {:?}", v.name(), feed),
+                    feed,
+                    viewer: v,
+                    schedulers: vec![
+                        SchedulerSpec::plain(SchedulerKind::RoundRobin),
+                        SchedulerSpec::plain(SchedulerKind::Priced),
+                    ],
+                    ..base.clone()
+                });
+            }
+        }
+        // Round-robin once, the centre-fed priced once, the viewer-fed priced once per viewer:
+        // six runs for each of the two budgets.
+        assert_eq!(schedule_runs(&[&cfg]), 2 * (1 + 1 + models.len()));
+        let runs = run(&cfg).expect("runs");
+        for r in &runs {
+            let priced: Vec<f64> = (0..cfg.conditions.len())
+                .map(|ci| r.cells[ci][0][1].true_p)
+                .collect();
+            // The viewer-fed runs differ between viewers, the centre-fed ones only in where
+            // they are measured.
+            assert!(
+                (0..models.len())
+                    .any(|i| (1..models.len()).any(|j| priced[2 * i] != priced[2 * j])),
+                "{priced:?}"
+            );
+            for ci in 0..cfg.conditions.len() {
+                for c in &r.cells[ci][0] {
+                    assert!(c.true_p == 0.0 || c.est_p > 0.0, "{} {}", c.true_p, c.est_p);
+                }
+                for c in &r.cells[ci][1] {
+                    assert_eq!((c.true_p, c.est_p), (0.0, 0.0));
+                }
+            }
+        }
+        let rows = summarise(&cfg, &runs);
+        assert!(rows.iter().any(|r| r.est_ratio_rr.ratio.is_finite()));
+        let md = markdown(&cfg, &runs, &rows);
+        assert!(md.contains("scene-driven viewer") && md.contains("; est "));
+    }
+
+    fn row(scheduler: &str, truth: (f64, f64, f64), est: (f64, f64, f64)) -> SummaryRow {
+        let ci = |(ratio, lo, hi): (f64, f64, f64)| RatioCi {
+            ratio,
+            lo,
+            hi,
+            n: 5,
+            non_finite: 0,
+        };
+        SummaryRow {
+            n: 500,
+            condition: "C=5".into(),
+            budget: "wall=0.100".into(),
+            scheduler: scheduler.into(),
+            true_p: MeanCi::of([1.0, 1.0]),
+            ratio_rr: ci(truth),
+            est_ratio_rr: ci(est),
+            share: ci((0.0, 0.0, 0.0)),
+            tests_rr: ci((1.0, 1.0, 1.0)),
+            prioritise_ms: MeanCi::of([0.0, 0.0]),
+            p_halves: None,
+            p_below_rr: None,
+        }
+    }
+
+    /// The estimate and the truth are said to rank a scheduler differently only where both
+    /// intervals clear 1 on opposite sides.
+    #[test]
+    fn rank_disagreements_need_both_intervals_clear_of_one() {
+        let rows = vec![
+            row("priced", (0.67, 0.6, 0.7), (1.2, 1.1, 1.3)),
+            row("priority-only", (0.9, 0.8, 1.05), (1.2, 1.1, 1.3)),
+            row("expected-gain", (0.5, 0.4, 0.6), (0.8, 0.7, 0.9)),
+        ];
+        let s = rank_disagreements(&rows, 500, "C=5");
+        assert!(
+            s.contains("priced at wall=0.100 (estimated 1.20, true 0.67)"),
+            "{s}"
+        );
+        assert!(
+            !s.contains("priority-only") && !s.contains("expected-gain"),
+            "{s}"
+        );
+        assert!(rank_disagreements(&rows[1..], 500, "C=5").is_empty());
+    }
+
     /// Under a wall-clock budget the bound is taken at the tests the exact kernel does in that
     /// time at its measured rate, however few a scheduler managed; under a sphere-test budget at
     /// the budget's own count; never below what a scheduler used.
@@ -2086,6 +2370,7 @@ mod tests {
             schedule_model: f2(5.0),
             measure_model: f2(5.0),
             feed,
+            viewer: ViewerModel::Script,
             suppress_saccades: suppress,
             schedulers: vec![
                 SchedulerSpec::plain(SchedulerKind::RoundRobin),

@@ -6,6 +6,9 @@
 //!   interrupt-at-0 case, and every scheduler at the interrupted budgets (a fraction of the exact
 //!   narrow-phase cost for that N; the paper's own target times scaled to this machine; optional
 //!   fixed sphere-test budgets);
+//! - **f1** (figures 5(b) and 6(a)): the paper's F1 case as it specifies it, perceptually sorted
+//!   sequential scheduling against round-robin with F1 (in pixels) both to schedule and to
+//!   measure, at the paper's target times, with the interrupt-at-0 case for scale;
 //! - **curves** (beyond the paper): true perceived inaccuracy against budget, per scheduler, at a few
 //!   N, to see whether the expected-gain scheduler beats the paper's best at equal budget.
 //!
@@ -105,17 +108,27 @@ impl Mode {
 pub enum Part {
     /// Figures 4-6 of the paper.
     Table,
+    /// The paper's F1 case: sorted-sequential against round-robin, F1 to schedule and measure
+    /// (figures 5(b) and 6(a)).
+    F1,
     /// Budget sweep (ours).
     Curves,
 }
 
 impl Part {
-    /// `table` or `curves`.
+    /// `table`, `f1` or `curves`.
     pub fn name(self) -> &'static str {
         match self {
             Self::Table => "table",
+            Self::F1 => "f1",
             Self::Curves => "curves",
         }
+    }
+
+    /// Whether the part's runs are timed closed-loop runs of the paper's table (run one at a
+    /// time, so T is not disturbed).
+    pub fn is_timed(self) -> bool {
+        matches!(self, Self::Table | Self::F1)
     }
 }
 
@@ -199,6 +212,8 @@ pub struct StudyConfig {
     pub paper_ms_scale: Option<f64>,
     /// Fixed sphere-test budgets of the table.
     pub tests_budgets: Vec<u64>,
+    /// Run the paper's F1 case ([`Part::F1`]) at the table's N and seeds.
+    pub f1: bool,
     /// The budget sweep, if requested.
     pub curves: Option<CurvesConfig>,
     /// The open-loop comparison of schedulers, if run (written into [`Self::out`]).
@@ -245,6 +260,7 @@ impl Default for StudyConfig {
             fractions: vec![0.01, 0.1],
             paper_ms_scale: Some(100.0),
             tests_budgets: Vec::new(),
+            f1: true,
             curves: None,
             open_loop: Some(OpenLoopConfig::standard()),
             grid: Some(OpenLoopConfig::grid()),
@@ -331,6 +347,35 @@ impl StudyConfig {
         }
     }
 
+    /// The budget the F1 case's figure and claim read: a tenth of the exact cost, about the
+    /// paper's 10 ms at N = 500 against its base case (about 1/16). The scaled target time itself
+    /// (0.1 ms at N = 500) ends before the narrow phase on this machine in a pilot run, so every
+    /// pair is deemed under either scheduler there.
+    pub const F1_FRACTION: f64 = 0.1;
+
+    /// The schedulers of the paper's F1 case: round-robin and perceptually sorted sequential.
+    pub const F1_SCHEDULERS: [SchedulerKind; 2] =
+        [SchedulerKind::RoundRobin, SchedulerKind::SortedSequential];
+
+    /// The budgets of the F1 case at `n`: the table's fractions of the exact cost and the
+    /// paper's target time (scaled), not its fixed sphere-test budgets.
+    pub fn f1_modes(&self, n: u32) -> Vec<Mode> {
+        self.table_modes(n)
+            .into_iter()
+            .filter(|m| !matches!(m, Mode::Tests(_)))
+            .collect()
+    }
+
+    /// The perceptual model a run schedules and measures with: F1 in the F1 case, else the
+    /// protocol's.
+    pub fn model_of(&self, part: Part) -> PerceptualModel {
+        if part == Part::F1 {
+            Self::f1()
+        } else {
+            self.model
+        }
+    }
+
     /// Engine config for one run.
     pub fn sim_config(&self, spec: &RunSpec, exact_cost: f64) -> SimConfig {
         SimConfig {
@@ -341,8 +386,8 @@ impl StudyConfig {
             budget: spec.mode.budget(exact_cost),
             scheduler: spec.scheduler,
             eccentricity_threshold_deg: self.threshold_deg,
-            schedule_model: self.model,
-            measure_model: self.model,
+            schedule_model: self.model_of(spec.part),
+            measure_model: self.model_of(spec.part),
             audit: true,
             calibration_frames: self.calibration_frames,
             ..SimConfig::default()
@@ -398,6 +443,26 @@ impl StudyConfig {
                 }
             }
         }
+        if self.f1 {
+            for &n in &self.ns {
+                for &seed in &self.seeds {
+                    let f = self.frames;
+                    out.push(base(
+                        Part::F1,
+                        n,
+                        seed,
+                        Mode::Zero,
+                        SchedulerKind::RoundRobin,
+                        f,
+                    ));
+                    for mode in self.f1_modes(n) {
+                        for s in Self::F1_SCHEDULERS {
+                            out.push(base(Part::F1, n, seed, mode, s, f));
+                        }
+                    }
+                }
+            }
+        }
         if let Some(c) = &self.curves {
             for &n in &c.ns {
                 for &seed in &self.seeds {
@@ -410,5 +475,45 @@ impl StudyConfig {
             }
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The F1 case runs round-robin and sorted-sequential at each N's fractions of the exact
+    /// cost and its target time, with the interrupt-at-0 case, scheduling and measuring with F1
+    /// while the table keeps its model.
+    #[test]
+    fn the_f1_case_schedules_and_measures_with_f1() {
+        let cfg = StudyConfig::tiny();
+        let f1: Vec<RunSpec> = cfg
+            .plan()
+            .into_iter()
+            .filter(|r| r.part == Part::F1)
+            .collect();
+        // Zero, then 2 schedulers at the fraction and the target time (not the tests budget).
+        assert_eq!(f1.len(), cfg.ns.len() * cfg.seeds.len() * 5);
+        for r in &f1 {
+            assert!(!matches!(r.mode, Mode::Tests(_) | Mode::Exact), "{r:?}");
+            let sim = cfg.sim_config(r, 100.0);
+            assert_eq!(sim.schedule_model, StudyConfig::f1());
+            assert_eq!(sim.measure_model, StudyConfig::f1());
+        }
+        assert!(
+            f1.iter()
+                .any(|r| r.scheduler == SchedulerKind::SortedSequential)
+        );
+        let table = cfg
+            .plan()
+            .into_iter()
+            .find(|r| r.part == Part::Table)
+            .expect("table runs");
+        assert_eq!(cfg.sim_config(&table, 100.0).measure_model, cfg.model);
+        assert_eq!(
+            cfg.f1_modes(10),
+            vec![Mode::Fraction(0.1), Mode::WallMs(0.05)]
+        );
     }
 }

@@ -16,7 +16,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use crate::clock::InstantClock;
 use crate::error::BenchError;
 use crate::gaze::{Gaze, RecordedGaze, ScriptedGaze};
-use crate::protocol::{GazeSpec, Part, RunSpec, StudyConfig};
+use crate::protocol::{GazeSpec, RunSpec, StudyConfig};
 use crate::stats::Accum;
 
 /// Header of the per-frame CSV.
@@ -270,7 +270,7 @@ pub fn run_plan(cfg: &StudyConfig, plan: &[RunSpec]) -> Result<Vec<RunSummary>, 
     };
     let mut out: Vec<Option<RunSummary>> = vec![None; plan.len()];
     let (parallel, serial): (Vec<usize>, Vec<usize>) =
-        (0..plan.len()).partition(|&i| plan[i].part == Part::Curves && cfg.jobs > 1);
+        (0..plan.len()).partition(|&i| !plan[i].part.is_timed() && cfg.jobs > 1);
     for i in serial {
         out[i] = Some(one(&plan[i])?);
     }

@@ -16,6 +16,7 @@ use foveal_engine::{BudgetSpec, Fixation, FrameBudget, SchedulerKind, SimConfig,
 use foveal_session::{FrameRecord, ReplayOutcome, Session};
 
 use crate::error::BenchError;
+use crate::gaze::ViewerModel;
 use crate::open_loop::{self as ol, Budget, Condition, GazeFeed, OpenLoopConfig, SchedulerSpec};
 
 /// What to run on a session.
@@ -235,6 +236,7 @@ fn open_loop_segment(
                 schedule_model: c.schedule_model,
                 measure_model: c.measure_model,
                 feed: GazeFeed::Viewer,
+                viewer: ViewerModel::Script,
                 suppress_saccades: false,
                 schedulers: all,
             },
@@ -243,6 +245,7 @@ fn open_loop_segment(
                 schedule_model: c.schedule_model,
                 measure_model: c.measure_model,
                 feed: GazeFeed::Centre,
+                viewer: ViewerModel::Script,
                 suppress_saccades: false,
                 schedulers: vec![
                     SchedulerSpec::plain(SchedulerKind::RoundRobin),

@@ -699,8 +699,9 @@ pub struct OpenRecord {
     pub speed_range_ns: [Num; 2],
     /// Mean exact sphere tests per frame.
     pub exact_tests: Num,
-    /// `[budget][scheduler]`: mean true P, sphere tests, prioritisation ms (wall clock).
-    pub cells: Vec<Vec<[Num; 3]>>,
+    /// `[budget][scheduler]`: mean true P, sphere tests, prioritisation ms (wall clock), the
+    /// paper's estimated P.
+    pub cells: Vec<Vec<[Num; 4]>>,
     /// `[budget]`: mean clairvoyant bound.
     pub bound: Vec<Num>,
     /// `[budget]`: mean sphere tests a frame the bound was taken at (empty in records written
@@ -730,7 +731,14 @@ impl OpenRecord {
                 c.iter()
                     .map(|b| {
                         b.iter()
-                            .map(|x| [Num(x.true_p), Num(x.tests), Num(x.prioritise_ms)])
+                            .map(|x| {
+                                [
+                                    Num(x.true_p),
+                                    Num(x.tests),
+                                    Num(x.prioritise_ms),
+                                    Num(x.est_p),
+                                ]
+                            })
                             .collect()
                     })
                     .collect()
@@ -794,6 +802,7 @@ fn assemble(n: u32, seed: u64, records: &[&OpenRecord]) -> Option<RunResult> {
                                 true_p: x[0].0,
                                 tests: x[1].0,
                                 prioritise_ms: x[2].0,
+                                est_p: x[3].0,
                             })
                             .collect()
                     })

@@ -21,7 +21,8 @@ fn tiny(out: PathBuf) -> StudyConfig {
         frames: 6,
         seeds: vec![1, 2],
         fractions: vec![0.1],
-        tests_budgets: vec![200],
+        // The second covers every exact frame: a cell that never interrupts.
+        tests_budgets: vec![200, 1_000_000],
         curves: Some(CurvesConfig {
             ns: vec![30],
             frames: 4,
@@ -108,10 +109,11 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
     let out = out_dir("tiny");
     let cfg = tiny(out.clone());
     let res = run_study(&cfg).expect("study runs");
-    // 2 N x 2 seeds x (exact + zero + 7 schedulers x (fraction + ms + tests)) + curves 2 x 2 x 7.
+    // 2 N x 2 seeds x (exact + zero + 7 schedulers x (fraction + ms + 2 tests)) + curves 2 x 2 x 7
+    // + the F1 case, 2 N x 2 seeds x (zero + 2 schedulers at the fraction and the target time).
     let k = SchedulerKind::ALL.len();
     assert_eq!(k, 7);
-    assert_eq!(res.runs.len(), 2 * 2 * (2 + k * 3) + 2 * 2 * k);
+    assert_eq!(res.runs.len(), 2 * 2 * (2 + k * 4) + 2 * 2 * k + 2 * 2 * 5);
     for f in [
         "table_runs.csv",
         "table_summary.csv",
@@ -119,6 +121,9 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
         "curves_runs.csv",
         "curves_summary.csv",
         "curves_report.md",
+        "f1_runs.csv",
+        "f1_summary.csv",
+        "f1_report.md",
     ] {
         assert!(out.join(f).is_file(), "missing {f}");
     }
@@ -128,6 +133,7 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
         "fig6_schedulers_f0.1",
         "fig6_schedulers_ms",
         "curves_n30",
+        "fig5b_6a_f1_sorted",
     ] {
         for ext in ["svg", "png"] {
             let p = out.join("figures").join(format!("{fig}.{ext}"));
@@ -136,7 +142,7 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
         }
     }
     let (_, runs) = parse_csv(&out.join("table_runs.csv"), &["part", "mode", "scheduler"]);
-    assert_eq!(runs.len(), 2 * 2 * (2 + k * 3));
+    assert_eq!(runs.len(), 2 * 2 * (2 + k * 4));
     let (h, summary) = parse_csv(
         &out.join("table_summary.csv"),
         &["part", "mode", "scheduler"],
@@ -146,7 +152,7 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
         h.contains(&"engine_hash".to_string()),
         "summaries are stamped"
     );
-    assert_eq!(summary.len(), 2 * (2 + k * 3));
+    assert_eq!(summary.len(), 2 * (2 + k * 4));
     parse_csv(
         &out.join("curves_summary.csv"),
         &["part", "mode", "scheduler"],
@@ -169,6 +175,23 @@ fn tiny_study_writes_every_output_and_the_csvs_parse() {
 
     let md = std::fs::read_to_string(out.join("table_report.md")).expect("report");
     assert!(md.contains("T exact / interrupted"), "{md}");
+    // A budget that covers every exact frame is marked, and out of the headlines.
+    assert!(
+        md.contains("| 10 | tests=1000000 (never interrupts) |"),
+        "{md}"
+    );
+    assert!(
+        md.contains("- N = 10, tests=1000000: never interrupts"),
+        "{md}"
+    );
+    assert!(
+        !md.contains("- N = 10, tests=200: never interrupts"),
+        "{md}"
+    );
+    let md = std::fs::read_to_string(out.join("f1_report.md")).expect("report");
+    assert!(md.contains("| sorted-sequential |"), "{md}");
+    let (_, f1_runs) = parse_csv(&out.join("f1_runs.csv"), &["part", "mode", "scheduler"]);
+    assert_eq!(f1_runs.len(), 2 * 2 * 5);
     let md = std::fs::read_to_string(out.join("curves_report.md")).expect("report");
     assert!(md.contains("expected-gain /"), "{md}");
     assert!(md.contains("closed loop"), "{md}");

@@ -8,7 +8,9 @@ pub mod csv;
 pub mod markdown;
 
 pub use csv::{write_runs_csv, write_summary_csv};
-pub use markdown::{best_vs_expected_gain, curves_markdown, describe, headlines, table_markdown};
+pub use markdown::{
+    best_vs_expected_gain, curves_markdown, describe, f1_markdown, headlines, table_markdown,
+};
 
 use foveal_engine::SchedulerKind;
 
@@ -55,6 +57,26 @@ impl Group<'_> {
     /// Mean and CI of a metric across seeds.
     pub fn ci(&self, m: Metric) -> MeanCi {
         MeanCi::of(self.runs.iter().map(|r| m(r)))
+    }
+
+    /// Whether no frame of any seed was interrupted: the budget covered the whole exact narrow
+    /// phase every time, so the cell says nothing about interruption (nothing is deemed and P is
+    /// zero by construction). Reports mark such cells and headlines leave them out.
+    pub fn never_interrupts(&self) -> bool {
+        self.mode != crate::protocol::Mode::Exact
+            && !self.runs.is_empty()
+            && self.runs.iter().all(|r| r.exhausted.mean() == 0.0)
+    }
+
+    /// Whether no frame of any seed did a sphere test under an interrupted budget: it ran out
+    /// before the narrow phase (a wall-clock budget the broad phase spends), so every candidate
+    /// was deemed whatever the scheduler, and schedulers cannot differ there.
+    pub fn never_tests(&self) -> bool {
+        !matches!(
+            self.mode,
+            crate::protocol::Mode::Exact | crate::protocol::Mode::Zero
+        ) && !self.runs.is_empty()
+            && self.runs.iter().all(|r| r.tests.mean() == 0.0)
     }
 
     /// Mean of a metric across seeds with its bootstrap interval (what a figure draws: on a log
