@@ -1904,6 +1904,7 @@ pub fn open_loop_figures(cfg: &OpenLoopConfig, rows: &[SummaryRow]) -> Vec<(Stri
         {
             let centre = cfg.conditions.iter().find(|c| {
                 c.feed == GazeFeed::Centre
+                    && c.viewer == cond.viewer
                     && c.schedule_model == cond.schedule_model
                     && c.measure_model == cond.measure_model
             });
