@@ -614,7 +614,7 @@ pub fn report(dir: &Path) -> Result<String, BenchError> {
     let stamp = crate::staleness::read(dir).ok();
     let mut s = String::from(
         "# The paper's section 4, claim by claim\n\nGenerated from this directory's \
-         `table_runs.csv` and `open_loop_runs.csv` by `cargo run --release -p foveal-bench -- \
+         `table_runs.csv`, `f1_runs.csv` and `open_loop_runs.csv` by `cargo run --release -p foveal-bench -- \
          study-report DIR`; do not edit. Each claim has one primary endpoint, named in the \
          code (`claims.rs`, `open_loop::primary_endpoints`) and committed before the run, tested \
          alone: a one-sided t test on the per-seed log ratios \
