@@ -37,6 +37,26 @@ const SHORT = {
   timing: { late_frame_factor: 1.5, max_repeats_per_block: 20 },
 };
 
+// The paper's experiment 4, short: a pair meeting in motion at 8 degrees a second along an axis
+// drawn per trial, among 0 or 3 identical distractors, the cross hidden during the stimulus; at
+// 0 and 4 degrees, touching or apart (8 trials, one block, no practice).
+const MOVING = {
+  ...SHORT,
+  name: "moving",
+  title: "A short run of experiment 4",
+  stimulus: { disc_diameter_deg: 1.0, duration_ms: 250, pair_axis: "random", motion_speed_deg_s: 8 },
+  eccentricities_deg: [0, 4],
+  directions_deg: [0],
+  gaps: [
+    { label: "touching", gap_deg: 0, weight: 1 },
+    { label: "large", gap_deg: 0.4, weight: 1 },
+  ],
+  blocks: 1,
+  practice_trials: 0,
+  distractors: { counts: [0, 3], colour: "white", speed_deg_s: 8, field_deg: 6 },
+  hide_cross_during_stimulus: true,
+};
+
 // The simulated observer: F2 with C = 4 degrees, a Weibull of threshold 0.1 degrees and slope 2,
 // 5% guesses and 2% lapses (foveal-psych's model).
 const OBSERVER = { c: 4, alpha: 0.1, beta: 2, guess: 0.05, lapse: 0.02 };
@@ -69,6 +89,7 @@ describe("/psych runs an experiment end to end", { skip }, () => {
     designs = mkdtempSync(join(tmpdir(), "foveal-psych-designs-"));
     mkdirSync(designs, { recursive: true });
     writeFileSync(join(designs, "short.json"), JSON.stringify(SHORT, null, 2));
+    writeFileSync(join(designs, "moving.json"), JSON.stringify(MOVING, null, 2));
     writeFileSync(join(designs, "broken.json"), JSON.stringify({ ...SHORT, name: "broken", gaps: [{ label: "touching", gap_deg: 0, weight: 99 }] }));
     server = await startServer(await freePort(), ["-n", "50", "--psych-results", results, "--psych-designs", designs]);
     browser = await launch();
@@ -180,6 +201,54 @@ describe("/psych runs an experiment end to end", { skip }, () => {
     assert.equal(header.trials_stored, rows.length);
     assert.equal(header.display.browser.px_per_cm_source, "calibration");
     assert.deepEqual(header.columns, columns);
+  });
+
+  test("a pair meeting in motion among distractors is stored with its level and its drawn axis", { timeout: 120_000 }, async () => {
+    await page.goto(`${server.url}psych?design=moving`);
+    assert.ok(await waitFor(async () => (await hook(page))?.state === "setup", 10_000), "the setup screen");
+    await page.fill("#participant", "sim02");
+    await page.click("#next");
+    assert.ok(await waitFor(async () => (await hook(page)).state === "calibration", 5_000), "the calibration screen");
+    await page.keyboard.press("Enter");
+    assert.ok(await waitFor(async () => (await hook(page)).state === "instructions", 5_000), "the instructions");
+    assert.match(await page.textContent("#screen"), /move towards each other/);
+    await page.keyboard.press(" ");
+    const seen = [];
+    let last = 0;
+    const until = Date.now() + 100_000;
+    for (;;) {
+      assert.ok(Date.now() < until, "the run did not finish within 100 s");
+      const h = await hook(page);
+      if (h.state === "error") assert.fail(`the page stopped: ${h.error}`);
+      if (h.state === "done") break;
+      if (h.state === "response" && h.trial && h.trial.id > last) {
+        last = h.trial.id;
+        seen.push(h.trial);
+        await page.keyboard.press(h.trial.gap_deg > 0 ? "j" : "f");
+        continue;
+      }
+      await sleep(10);
+    }
+    assert.deepEqual(pageErrors, []);
+    const text = readFileSync(join(results, "sim02_1.csv"), "utf8");
+    const [head, ...lines] = text.trimEnd().split("\n");
+    const columns = head.split(",");
+    const rows = lines.map((l) => Object.fromEntries(l.split(",").map((v, i) => [columns[i], v])));
+    assert.equal(rows.length, seen.length, text);
+    rows.forEach((r, i) => {
+      const t = seen[i];
+      assert.equal(t.speed_deg_s, 8);
+      assert.equal(t.cross_hidden, true);
+      assert.equal(t.distractor_starts.length, t.distractors, `row ${i + 1}: one start per distractor`);
+      assert.equal(Number(r.distractors), t.distractors, `row ${i + 1}`);
+      assert.ok(t.axis_deg >= 0 && t.axis_deg < 360, `row ${i + 1}: axis ${t.axis_deg}`);
+      assert.equal(r.axis_deg, t.axis_deg.toFixed(3), `row ${i + 1}: the axis drawn is stored`);
+      if (r.valid === "1") assert.ok(Math.abs(Number(r.duration_ms) - 250) < Number(r.refresh_ms) / 2, `row ${i + 1}: ${r.duration_ms} ms`);
+    });
+    // Every cell (2 eccentricities x 2 gaps x 2 distractor levels) among the valid trials.
+    const valid = rows.filter((r) => r.valid === "1");
+    assert.equal(new Set(valid.map((r) => r.cell)).size, 8);
+    assert.deepEqual(new Set(valid.map((r) => r.distractors)), new Set(["0", "3"]));
   });
 
   test("a design out of range stops the page with the field and its limit", async () => {

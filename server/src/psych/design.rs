@@ -1,6 +1,7 @@
 //! An experiment's design: conditions, levels, repetitions and timing, read from a JSON file so
-//! that a lab changes them without code (`data/psych/experiment1.json` is the default, embedded
-//! in the binary; `--psych-designs DIR` adds the lab's own, `DIR/NAME.json`).
+//! that a lab changes them without code (`data/psych/experiment1.json` is the default; the
+//! paper's experiments 2-4, with motion and distractors, are `experiment2` to `experiment4`; all
+//! are embedded in the binary, and `--psych-designs DIR` adds the lab's own, `DIR/NAME.json`).
 //!
 //! A design is checked before any participant sees it: every field has a range, and a design out
 //! of range, or with a field this version does not know, is refused with the field's path and its
@@ -11,13 +12,36 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 /// The designs shipped in the binary, by name.
-const EMBEDDED: &[(&str, &str)] = &[(
-    "experiment1",
-    include_str!(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../data/psych/experiment1.json"
-    )),
-)];
+const EMBEDDED: &[(&str, &str)] = &[
+    (
+        "experiment1",
+        include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../data/psych/experiment1.json"
+        )),
+    ),
+    (
+        "experiment2",
+        include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../data/psych/experiment2.json"
+        )),
+    ),
+    (
+        "experiment3",
+        include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../data/psych/experiment3.json"
+        )),
+    ),
+    (
+        "experiment4",
+        include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../data/psych/experiment4.json"
+        )),
+    ),
+];
 
 /// The design `/psych` runs when the address names none.
 pub const DEFAULT_DESIGN: &str = "experiment1";
@@ -55,6 +79,30 @@ pub struct Design {
     pub responses: Responses,
     /// What makes a presentation's timing invalid.
     pub timing: Timing,
+    /// Discs moving about the screen beside the pair (experiments 3 and 4), their number a
+    /// factor crossed with the cells; none when absent.
+    #[serde(default)]
+    pub distractors: Option<Distractors>,
+    /// Hide the fixation cross while the stimulus is shown (experiment 4, where a collision may
+    /// happen at the fixation).
+    #[serde(default)]
+    pub hide_cross_during_stimulus: bool,
+}
+
+/// Distractors: discs of the pair's size moving in straight lines at a constant speed, from
+/// random places within a circle about the fixation, in random directions (drawn per trial).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Distractors {
+    /// Their number, one level per entry (the paper's three levels); 0 is allowed.
+    pub counts: Vec<u32>,
+    /// `red` (a pop-out search, experiment 3) or `white`, the pair's colour (a serial search,
+    /// experiment 4).
+    pub colour: String,
+    /// Their speed (degrees per second).
+    pub speed_deg_s: f64,
+    /// The radius of the circle they start in, about the fixation (degrees).
+    pub field_deg: f64,
 }
 
 /// The stimulus: two white discs on black, side by side along an axis.
@@ -66,8 +114,14 @@ pub struct Stimulus {
     /// How long the discs are shown (ms; rounded to whole frames by the display).
     pub duration_ms: f64,
     /// The line the two discs' centres lie on: `horizontal`, `vertical`, `radial` (through the
-    /// fixation) or `tangential` (across that line).
+    /// fixation), `tangential` (across that line) or `random` (drawn per trial, as experiments 3
+    /// and 4 randomise the direction of motion; the trial records the angle).
     pub pair_axis: String,
+    /// Motion (experiments 2-4): each disc moves along the pair's axis at this speed (degrees
+    /// per second), toward the other for the first half of the presentation and away for the
+    /// second, closest (touching, or the gap) at its middle. Absent or 0: stationary.
+    #[serde(default)]
+    pub motion_speed_deg_s: Option<f64>,
 }
 
 /// A gap level.
@@ -192,13 +246,28 @@ impl Design {
         self.eccentricities_deg.len()
             * self.directions_deg.len()
             * per_location
+            * self.distractor_levels()
             * self.repetitions as usize
     }
 
-    /// The index of the cell of eccentricity `e`, direction `d` and gap level `g` (indices into
-    /// the design's lists): the `cell` column.
-    pub fn cell(&self, e: usize, d: usize, g: usize) -> usize {
-        (e * self.directions_deg.len() + d) * self.gaps.len() + g
+    /// The distractor levels crossed with the cells (1 without distractors).
+    pub fn distractor_levels(&self) -> usize {
+        self.distractors.as_ref().map_or(1, |d| d.counts.len())
+    }
+
+    /// The distractor count of level `l` (0 without distractors).
+    pub fn distractor_count(&self, l: usize) -> u32 {
+        self.distractors
+            .as_ref()
+            .and_then(|d| d.counts.get(l).copied())
+            .unwrap_or(0)
+    }
+
+    /// The index of the cell of eccentricity `e`, direction `d`, gap level `g` and distractor
+    /// level `l` (indices into the design's lists): the `cell` column. Without distractors (one
+    /// level) it is experiment 1's numbering.
+    pub fn cell(&self, e: usize, d: usize, g: usize, l: usize) -> usize {
+        ((e * self.directions_deg.len() + d) * self.gaps.len() + g) * self.distractor_levels() + l
     }
 
     /// Check every field; the error names the first out of range.
@@ -261,7 +330,7 @@ impl Design {
         )?;
         if !matches!(
             self.stimulus.pair_axis.as_str(),
-            "horizontal" | "vertical" | "radial" | "tangential"
+            "horizontal" | "vertical" | "radial" | "tangential" | "random"
         ) {
             return Err(bad(
                 "stimulus.pair_axis",
@@ -269,8 +338,51 @@ impl Design {
                     "{:?}",
                     self.stimulus.pair_axis.chars().take(40).collect::<String>()
                 ),
-                "must be `horizontal`, `vertical`, `radial` or `tangential`",
+                "must be `horizontal`, `vertical`, `radial`, `tangential` or `random`",
             ));
+        }
+        if let Some(v) = self.stimulus.motion_speed_deg_s {
+            range(
+                "stimulus.motion_speed_deg_s",
+                v,
+                0.0,
+                100.0,
+                "degrees per second",
+            )?;
+        }
+        if let Some(d) = &self.distractors {
+            count("distractors.counts", d.counts.len(), 1, 8)?;
+            for (i, &n) in d.counts.iter().enumerate() {
+                if n > 50 {
+                    return Err(bad(
+                        &format!("distractors.counts[{i}]"),
+                        n.to_string(),
+                        "must be within 0..=50",
+                    ));
+                }
+                if d.counts[..i].contains(&n) {
+                    return Err(bad(
+                        &format!("distractors.counts[{i}]"),
+                        n.to_string(),
+                        "must differ from every other level",
+                    ));
+                }
+            }
+            if !matches!(d.colour.as_str(), "red" | "white") {
+                return Err(bad(
+                    "distractors.colour",
+                    format!("{:?}", d.colour.chars().take(40).collect::<String>()),
+                    "must be `red` (pop-out) or `white` (the pair's colour)",
+                ));
+            }
+            range(
+                "distractors.speed_deg_s",
+                d.speed_deg_s,
+                0.0,
+                100.0,
+                "degrees per second",
+            )?;
+            range("distractors.field_deg", d.field_deg, 0.5, 40.0, "degrees")?;
         }
         range(
             "fixation_cross_deg",
@@ -512,6 +624,57 @@ mod tests {
         let labels: Vec<_> = d.gaps.iter().map(|g| g.label.as_str()).collect();
         assert_eq!(labels, ["touching", "small", "large"]);
         assert_eq!(d.trials(), 3 * 4 * 4 * 5);
+    }
+
+    /// The paper's experiments 2-4: motion under 300 ms; a random axis and three distractor
+    /// levels, red in 3 and white in 4, where the cross is hidden and collisions may happen at
+    /// the fixation.
+    #[test]
+    fn the_shipped_designs_are_the_papers_experiments_two_to_four() {
+        let load = |n| Designs::default().load(n).expect("valid");
+        let (e2, e3, e4) = (
+            load("experiment2"),
+            load("experiment3"),
+            load("experiment4"),
+        );
+        for d in [&e2, &e3, &e4] {
+            assert!(d.stimulus.motion_speed_deg_s.is_some_and(|v| v > 0.0));
+            assert!(d.stimulus.duration_ms < 300.0);
+        }
+        assert!(e2.distractors.is_none() && e2.stimulus.pair_axis != "random");
+        let (d3, d4) = (
+            e3.distractors.as_ref().expect("3"),
+            e4.distractors.as_ref().expect("4"),
+        );
+        assert_eq!((d3.colour.as_str(), d4.colour.as_str()), ("red", "white"));
+        assert_eq!((d3.counts.len(), d4.counts.len()), (3, 3));
+        assert_eq!(e3.stimulus.pair_axis, "random");
+        assert!(e4.hide_cross_during_stimulus && !e3.hide_cross_during_stimulus);
+        assert!(e4.eccentricities_deg.contains(&0.0));
+        // The levels multiply the trials and the cells; every cell index is distinct.
+        assert_eq!(e4.trials() % 3, 0);
+        let mut seen = std::collections::HashSet::new();
+        for e in 0..e4.eccentricities_deg.len() {
+            for d in 0..e4.directions_deg.len() {
+                for g in 0..e4.gaps.len() {
+                    for l in 0..3 {
+                        assert!(seen.insert(e4.cell(e, d, g, l)));
+                    }
+                }
+            }
+        }
+        // Without distractors the numbering is experiment 1's.
+        assert_eq!(shipped().cell(1, 2, 1, 0), (4 + 2) * 3 + 1);
+        let mut bad = e3.clone();
+        if let Some(d) = bad.distractors.as_mut() {
+            d.colour = "blue".into();
+        }
+        let e = bad.validate().expect_err("colour").to_string();
+        assert!(e.contains("`distractors.colour`"), "{e}");
+        let mut bad = e3.clone();
+        bad.stimulus.motion_speed_deg_s = Some(f64::NAN);
+        let e = bad.validate().expect_err("speed").to_string();
+        assert!(e.contains("`stimulus.motion_speed_deg_s`"), "{e}");
     }
 
     #[test]

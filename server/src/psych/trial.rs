@@ -37,6 +37,8 @@ pub const COLUMNS: &[&str] = &[
     "x_px",
     "y_px",
     "frame_ms",
+    "distractors",
+    "axis_deg",
 ];
 
 /// Most frame timestamps one trial may carry (a 2 s stimulus at 360 Hz is 720).
@@ -49,8 +51,9 @@ pub struct TrialRecord {
     pub trial: u32,
     /// 1-based block.
     pub block: u32,
-    /// The condition's index: (eccentricity index x directions + direction index) x gap levels
-    /// + gap level index, as [`Design::cell`] numbers them.
+    /// The condition's index: ((eccentricity index x directions + direction index) x gap levels
+    /// + gap level index) x distractor levels + distractor level index, as [`Design::cell`]
+    /// numbers them.
     pub cell: u32,
     /// Eccentricity of the point between the discs (degrees; one of the design's).
     pub eccentricity_deg: f64,
@@ -91,6 +94,11 @@ pub struct TrialRecord {
     pub y_px: f64,
     /// Every frame's timestamp from the onset's to the offset's (ms after the onset).
     pub frame_ms: Vec<f64>,
+    /// Distractors shown (one of the design's levels; 0 without distractors).
+    pub distractors: u32,
+    /// The pair's axis as drawn, degrees counter-clockwise from the right (a `random` axis's
+    /// draw; `None` where the design fixes the axis).
+    pub axis_deg: Option<f64>,
 }
 
 /// A trial refused: the field and why.
@@ -152,6 +160,8 @@ impl TrialRecord {
             x_px: f.req("x_px", NUM)?,
             y_px: f.req("y_px", NUM)?,
             frame_ms: f.req("frame_ms", "an array of numbers")?,
+            distractors: f.opt("distractors", COUNT)?.unwrap_or(0),
+            axis_deg: f.opt("axis_deg", NUM)?,
         };
         f.done()?;
         Ok(t)
@@ -219,7 +229,31 @@ impl TrialRecord {
             ));
         };
         let level = &design.gaps[g];
-        let cell = design.cell(e, d, g);
+        let Some(l) = (0..design.distractor_levels())
+            .find(|&l| design.distractor_count(l) == self.distractors)
+        else {
+            let counts: Vec<u32> = (0..design.distractor_levels())
+                .map(|l| design.distractor_count(l))
+                .collect();
+            return Err(refuse(
+                "distractors",
+                format!(
+                    "{} is not one of the design's levels {counts:?}",
+                    self.distractors
+                ),
+            ));
+        };
+        match (self.axis_deg, design.stimulus.pair_axis.as_str()) {
+            (Some(a), _) => within("axis_deg", a, 0.0, 360.0)?,
+            (None, "random") => {
+                return Err(refuse(
+                    "axis_deg",
+                    "is required: the design draws the pair's axis per trial",
+                ));
+            }
+            (None, _) => {}
+        }
+        let cell = design.cell(e, d, g, l);
         if self.cell as usize != cell {
             return Err(refuse(
                 "cell",
@@ -328,6 +362,9 @@ impl TrialRecord {
             format!("{:.2}", self.y_px),
             // `;` inside the field: the file stays one comma per column.
             frames.join(";"),
+            self.distractors.to_string(),
+            self.axis_deg
+                .map_or_else(String::new, |a| format!("{a:.3}")),
         ];
         let mut line = fields.join(",");
         line.push('\n');
@@ -364,6 +401,8 @@ mod tests {
             x_px: 0.0,
             y_px: 217.0,
             frame_ms: vec![0.0, 16.7, 33.3],
+            distractors: 0,
+            axis_deg: None,
         }
     }
 
@@ -375,7 +414,62 @@ mod tests {
             row.starts_with("p01,1,experiment1,1,1,16,5,90,small,0.05,apart,1,key,512.3,1,,,"),
             "{row}"
         );
-        assert!(row.trim_end().ends_with("0.000;16.700;33.300"), "{row}");
+        assert!(row.trim_end().ends_with("0.000;16.700;33.300,0,"), "{row}");
+    }
+
+    /// Experiment 4's trials name their distractor level and the axis drawn; the cell counts
+    /// the level, and a count or axis the design does not hold is refused by field.
+    #[test]
+    fn distractor_levels_and_drawn_axes_are_checked() {
+        let design = Designs::default().load("experiment4").expect("design");
+        let counts = design
+            .distractors
+            .as_ref()
+            .expect("distractors")
+            .counts
+            .clone();
+        let e = design
+            .eccentricities_deg
+            .iter()
+            .position(|&x| x == 5.0)
+            .expect("5 degrees");
+        let d = design
+            .directions_deg
+            .iter()
+            .position(|&x| x == 90.0)
+            .expect("90 degrees");
+        let g = design
+            .gaps
+            .iter()
+            .position(|x| x.label == "small")
+            .expect("small");
+        let mut r = TrialRecord {
+            distractors: counts[2],
+            axis_deg: Some(37.5),
+            cell: design.cell(e, d, g, 2) as u32,
+            intended_ms: design.stimulus.duration_ms,
+            gap_deg: design.gaps[g].gap_deg,
+            ..record()
+        };
+        assert_eq!(r.validate(&design, 1), Ok(()));
+        let row = r.row("p01", "1", "experiment4");
+        assert!(
+            row.trim_end().ends_with(&format!(",{},37.500", counts[2])),
+            "{row}"
+        );
+        r.cell = design.cell(e, d, g, 1) as u32;
+        assert_eq!(r.validate(&design, 1).expect_err("cell").field, "cell");
+        r.cell = design.cell(e, d, g, 2) as u32;
+        r.distractors = 999;
+        assert_eq!(
+            r.validate(&design, 1).expect_err("count").field,
+            "distractors"
+        );
+        r.distractors = counts[2];
+        r.axis_deg = None;
+        assert_eq!(r.validate(&design, 1).expect_err("axis").field, "axis_deg");
+        r.axis_deg = Some(f64::NAN);
+        assert_eq!(r.validate(&design, 1).expect_err("nan").field, "axis_deg");
     }
 
     #[test]

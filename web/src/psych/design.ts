@@ -14,10 +14,17 @@ export interface Answer {
   mouse_button: number | null;
 }
 
+export interface Distractors {
+  counts: number[];
+  colour: "red" | "white";
+  speed_deg_s: number;
+  field_deg: number;
+}
+
 export interface Design {
   name: string;
   title: string;
-  stimulus: { disc_diameter_deg: number; duration_ms: number; pair_axis: Axis };
+  stimulus: { disc_diameter_deg: number; duration_ms: number; pair_axis: Axis; motion_speed_deg_s?: number | null };
   fixation_cross_deg: number;
   inter_stimulus_ms: number;
   eccentricities_deg: number[];
@@ -28,25 +35,33 @@ export interface Design {
   practice_trials: number;
   responses: { touching: Answer; apart: Answer };
   timing: { late_frame_factor: number; max_repeats_per_block: number };
+  distractors?: Distractors | null;
+  hide_cross_during_stimulus?: boolean;
 }
 
-/** One condition: an eccentricity, a direction and a gap level. */
+/** One condition: an eccentricity, a direction, a gap level and a distractor level. */
 export interface Cell {
-  /** As the server numbers cells: (e * directions + d) * gap levels + g. */
+  /** As the server numbers cells: ((e * directions + d) * gap levels + g) * distractor levels + l. */
   index: number;
   eccentricityDeg: number;
   directionDeg: number;
   gap: GapLevel;
+  /** Distractors shown (0 without). */
+  distractors: number;
 }
 
 /** Every cell of the design, in the server's numbering. */
 export function cells(d: Design): Cell[] {
   const out: Cell[] = [];
+  const levels = d.distractors?.counts ?? [0];
   d.eccentricities_deg.forEach((e, ei) =>
     d.directions_deg.forEach((dir, di) =>
-      d.gaps.forEach((gap, gi) => {
-        out.push({ index: (ei * d.directions_deg.length + di) * d.gaps.length + gi, eccentricityDeg: e, directionDeg: dir, gap });
-      }),
+      d.gaps.forEach((gap, gi) =>
+        levels.forEach((count, li) => {
+          const index = ((ei * d.directions_deg.length + di) * d.gaps.length + gi) * levels.length + li;
+          out.push({ index, eccentricityDeg: e, directionDeg: dir, gap, distractors: count });
+        }),
+      ),
     ),
   );
   return out;

@@ -39,12 +39,15 @@ export function along(p: Point, u: Point, deg: number, distanceCm: number): Poin
   return at((lo + hi) / 2);
 }
 
-export type Axis = "horizontal" | "vertical" | "radial" | "tangential";
+export type Axis = "horizontal" | "vertical" | "radial" | "tangential" | "random";
 
-/** The unit vector the two discs' centres lie along, at the point `p` between them. */
-export function axisAt(axis: Axis, p: Point): Point {
+/** The unit vector the two discs' centres lie along, at the point `p` between them; a `random`
+ * axis is the angle drawn for the trial (`axisDeg`, counter-clockwise from the right). */
+export function axisAt(axis: Axis, p: Point, axisDeg = 0): Point {
   const r = Math.hypot(p[0], p[1]);
   switch (axis) {
+    case "random":
+      return [Math.cos(axisDeg * RAD), Math.sin(axisDeg * RAD)];
     case "horizontal":
       return [1, 0];
     case "vertical":
@@ -68,18 +71,29 @@ export interface Layout {
 
 /**
  * Two discs of diameter `diameterDeg` whose facing edges are `gapDeg` apart (both angles as
- * seen from the eye), the point between them at (`eccDeg`, `dirDeg`), along `axis`.
+ * seen from the eye), the point between them at (`eccDeg`, `dirDeg`), along `axis` (for a
+ * `random` axis, at `axisDeg`). `awayDeg` moves each disc that much further out along the axis:
+ * a moving pair at a moment other than its closest.
  */
-export function layout(eccDeg: number, dirDeg: number, gapDeg: number, diameterDeg: number, axis: Axis, distanceCm: number): Layout {
+export function layout(eccDeg: number, dirDeg: number, gapDeg: number, diameterDeg: number, axis: Axis, distanceCm: number, axisDeg = 0, awayDeg = 0): Layout {
   const p = pointAt(eccDeg, dirDeg, distanceCm);
-  const u = axisAt(axis, p);
+  const u = axisAt(axis, p, axisDeg);
   const back: Point = [-u[0], -u[1]];
-  const half = gapDeg / 2;
+  const half = gapDeg / 2 + Math.max(0, awayDeg);
   const edges: [Point, Point] = [along(p, back, half, distanceCm), along(p, u, half, distanceCm)];
   const centres: [Point, Point] = [along(p, back, half + diameterDeg / 2, distanceCm), along(p, u, half + diameterDeg / 2, distanceCm)];
   const dist = (a: Point, b: Point) => Math.hypot(a[0] - b[0], a[1] - b[1]);
   const radii: [number, number] = [dist(centres[0], edges[0]), dist(centres[1], edges[1])];
   return { contact: p, centres, radii, gapCm: dist(edges[0], edges[1]) };
+}
+
+/**
+ * How far out each disc of a moving pair is, `tMs` into a presentation of `durationMs` at
+ * `speedDegS` (degrees per second): approaching for the first half, closest at the middle,
+ * receding for the second (the paper's experiment 2).
+ */
+export function awayAt(tMs: number, durationMs: number, speedDegS: number): number {
+  return (speedDegS * Math.abs(tMs - durationMs / 2)) / 1000;
 }
 
 /** CSS pixels per centimetre a display of these dimensions has, at this device pixel ratio. */

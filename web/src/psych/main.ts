@@ -6,7 +6,7 @@
 
 import { Api, type DesignAnswer, Refused, pageToken } from "./api";
 import { type Cell, type Design, blocks, practice } from "./design";
-import { CARD_HEIGHT_CM, CARD_WIDTH_CM, type Layout, layout, pxPerCmOfDisplay } from "./geometry";
+import { CARD_HEIGHT_CM, CARD_WIDTH_CM, type Layout, type Point, awayAt, layout, pointAt, pxPerCmOfDisplay } from "./geometry";
 import { type Presentation, measureRefresh, present, stall } from "./present";
 
 type State = "loading" | "setup" | "calibration" | "instructions" | "refresh" | "iti" | "stimulus" | "response" | "feedback" | "break" | "done" | "error";
@@ -20,6 +20,15 @@ interface HookTrial {
   direction_deg: number;
   gap_label: string;
   gap_deg: number;
+  /** Distractors shown, and where each was at the onset (cm from the fixation, y up). */
+  distractors: number;
+  distractor_starts: Point[];
+  /** The pair's axis drawn for the trial (degrees), where the design draws it. */
+  axis_deg: number | null;
+  /** Speed of each disc (degrees per second; 0: stationary). */
+  speed_deg_s: number;
+  /** Whether the fixation cross is hidden during the stimulus. */
+  cross_hidden: boolean;
 }
 
 const hook = {
@@ -102,8 +111,18 @@ function resize() {
   redraw(null);
 }
 
-/** The screen cleared to black, the fixation cross, and `stim`'s discs if given. */
-function redraw(stim: Layout | null) {
+/** Distractor discs at one moment: centres (cm from the fixation), their radius and colour. */
+interface Dots {
+  centres: Point[];
+  radiusCm: number;
+  colour: string;
+}
+
+/**
+ * The screen cleared to black, the fixation cross (unless `hideCross`), `stim`'s discs and the
+ * distractors, if given.
+ */
+function redraw(stim: Layout | null, dots: Dots | null = null, hideCross = false) {
   const dpr = window.devicePixelRatio || 1;
   ctx.setTransform(1, 0, 0, 1, 0, 0);
   ctx.fillStyle = "#000";
@@ -112,15 +131,25 @@ function redraw(stim: Layout | null) {
   // Device pixels, origin at the fixation, y up.
   const s = pxPerCm * dpr;
   ctx.setTransform(s, 0, 0, -s, canvas.width / 2, canvas.height / 2);
-  const arm = (Math.tan(((design.fixation_cross_deg / 2) * Math.PI) / 180) * info.display.viewing_distance_cm);
-  ctx.strokeStyle = "#fff";
-  ctx.lineWidth = (2 * dpr) / s;
-  ctx.beginPath();
-  ctx.moveTo(-arm, 0);
-  ctx.lineTo(arm, 0);
-  ctx.moveTo(0, -arm);
-  ctx.lineTo(0, arm);
-  ctx.stroke();
+  if (!hideCross) {
+    const arm = Math.tan(((design.fixation_cross_deg / 2) * Math.PI) / 180) * info.display.viewing_distance_cm;
+    ctx.strokeStyle = "#fff";
+    ctx.lineWidth = (2 * dpr) / s;
+    ctx.beginPath();
+    ctx.moveTo(-arm, 0);
+    ctx.lineTo(arm, 0);
+    ctx.moveTo(0, -arm);
+    ctx.lineTo(0, arm);
+    ctx.stroke();
+  }
+  if (dots) {
+    ctx.fillStyle = dots.colour;
+    for (const c of dots.centres) {
+      ctx.beginPath();
+      ctx.arc(c[0], c[1], dots.radiusCm, 0, 2 * Math.PI);
+      ctx.fill();
+    }
+  }
   if (!stim) return;
   ctx.fillStyle = "#fff";
   for (const i of [0, 1]) {
@@ -130,17 +159,57 @@ function redraw(stim: Layout | null) {
   }
 }
 
-function layoutOf(c: Cell): Layout {
-  return layout(c.eccentricityDeg, c.directionDeg, c.gap.gap_deg, design.stimulus.disc_diameter_deg, design.stimulus.pair_axis, info.display.viewing_distance_cm);
+/** The pair of `c` with its axis at `axisDeg` (a `random` axis's draw), `awayDeg` out of its closest. */
+function layoutOf(c: Cell, axisDeg = 0, awayDeg = 0): Layout {
+  return layout(c.eccentricityDeg, c.directionDeg, c.gap.gap_deg, design.stimulus.disc_diameter_deg, design.stimulus.pair_axis, info.display.viewing_distance_cm, axisDeg, awayDeg);
+}
+
+/** Each disc's speed, degrees per second (0: stationary). */
+function speedDegS(): number {
+  return design.stimulus.motion_speed_deg_s ?? 0;
+}
+
+/**
+ * `n` distractors for one trial: starting uniformly within the design's field about the
+ * fixation, each moving in a straight line in its own random direction at the design's speed
+ * (converted at the fixation's scale: a degree there is `distance x tan 1°` of screen). Returns
+ * their starts and their position at `tMs`.
+ */
+function distractors(n: number): { starts: Point[]; at: (tMs: number) => Dots | null } {
+  const dz = design.distractors;
+  if (!dz || n === 0) return { starts: [], at: () => null };
+  const d = info.display.viewing_distance_cm;
+  const cmPerDeg = d * Math.tan(Math.PI / 180);
+  const starts: Point[] = [];
+  const velocities: Point[] = [];
+  for (let i = 0; i < n; i++) {
+    starts.push(pointAt(dz.field_deg * Math.sqrt(Math.random()), 360 * Math.random(), d));
+    const a = 2 * Math.PI * Math.random();
+    velocities.push([dz.speed_deg_s * cmPerDeg * Math.cos(a), dz.speed_deg_s * cmPerDeg * Math.sin(a)]);
+  }
+  const radiusCm = d * Math.tan(((design.stimulus.disc_diameter_deg / 2) * Math.PI) / 180);
+  const colour = dz.colour === "red" ? "#f00" : "#fff";
+  return {
+    starts,
+    at: (tMs) => ({
+      centres: starts.map((p, i) => [p[0] + (velocities[i][0] * tMs) / 1000, p[1] + (velocities[i][1] * tMs) / 1000] as Point),
+      radiusCm,
+      colour,
+    }),
+  };
 }
 
 /** Why the design's stimuli do not fit this window, or null. */
 function offScreen(): string | null {
   const half = [window.innerWidth / 2 / pxPerCm, window.innerHeight / 2 / pxPerCm];
   const widest = Math.max(...design.gaps.map((g) => g.gap_deg));
+  // A moving pair is furthest apart at the onset and the offset; a random axis may point anywhere.
+  const away = awayAt(0, design.stimulus.duration_ms, speedDegS());
+  const axes = design.stimulus.pair_axis === "random" ? [0, 45, 90, 135] : [0];
   for (const e of design.eccentricities_deg)
-    for (const d of design.directions_deg) {
-      const l = layout(e, d, widest, design.stimulus.disc_diameter_deg, design.stimulus.pair_axis, info.display.viewing_distance_cm);
+    for (const d of design.directions_deg)
+      for (const axisDeg of axes) {
+      const l = layout(e, d, widest, design.stimulus.disc_diameter_deg, design.stimulus.pair_axis, info.display.viewing_distance_cm, axisDeg, away);
       for (const axis of [0, 1]) {
         const reach = Math.max(...[0, 1].map((i) => Math.abs(l.centres[i][axis]) + l.radii[i]));
         if (reach > half[axis]) {
@@ -230,13 +299,21 @@ async function calibrate() {
   }
 }
 
+/** What the participant will see, in one sentence for the instructions. */
+function stimulusSentence(): string {
+  const dz = design.distractors;
+  const others = dz ? ` Other ${dz.colour === "red" ? "red" : "white"} discs will move about the screen at the same time: ignore them.` : "";
+  if (speedDegS() > 0) return `Two white discs will move towards each other briefly somewhere around it, meet or nearly meet, and move apart again.${others} Judge the moment they are closest.`;
+  return `Two white discs will flash briefly somewhere around it.${others}`;
+}
+
 async function instructions() {
   setState("instructions");
   const key = (k: string[]) => k.map((x) => `<kbd>${escapeHtml(x)}</kbd>`).join(" or ");
   const mouse = (b: number | null) => (b === null ? "" : ` or the ${["left", "middle", "right", "back", "forward"][b]} mouse button`);
   const r = design.responses;
   show(`<h1>Instructions</h1>
-    <p>Keep your eyes on the cross in the middle of the screen the whole time. Two white discs will flash briefly somewhere around it.</p>
+    <p>Keep your eyes on the ${design.hide_cross_during_stimulus ? "middle of the screen (the cross there disappears while the discs are shown)" : "cross in the middle of the screen"} the whole time. ${stimulusSentence()}</p>
     <p>If the discs <b>touch</b>, press ${key(r.touching.keys)}${mouse(r.touching.mouse_button)}.<br>
     If there is a <b>gap</b> between them, press ${key(r.apart.keys)}${mouse(r.apart.mouse_button)}.</p>
     <p>Answer as well as you can; guess when unsure. First ${design.practice_trials} practice trials, which tell you whether you were right; then ${design.blocks} blocks with a break after each.</p>
@@ -292,10 +369,17 @@ const sleep = (ms: number) => new Promise((r) => setTimeout(r, ms));
 let presentations = 0;
 
 /** One presentation and its answer. */
-async function run(cell: Cell, block: number, isPractice: boolean, refreshMs: number): Promise<{ shown: Presentation; answered: Answered; stim: Layout }> {
+async function run(cell: Cell, block: number, isPractice: boolean, refreshMs: number): Promise<{ shown: Presentation; answered: Answered; stim: Layout; axisDeg: number | null }> {
   setState("iti");
   await sleep(design.inter_stimulus_ms);
-  const stim = layoutOf(cell);
+  const axisDeg = design.stimulus.pair_axis === "random" ? 360 * Math.random() : null;
+  // The pair at its closest (what the gap is measured on), and at any moment of the motion.
+  const stim = layoutOf(cell, axisDeg ?? 0);
+  const speed = speedDegS();
+  const duration = design.stimulus.duration_ms;
+  const pairAt = (tMs: number) => (speed > 0 ? layoutOf(cell, axisDeg ?? 0, awayAt(tMs, duration, speed)) : stim);
+  const dots = distractors(cell.distractors);
+  const hideCross = design.hide_cross_during_stimulus === true;
   hook.trial = {
     id: ++presentations,
     practice: isPractice,
@@ -304,13 +388,18 @@ async function run(cell: Cell, block: number, isPractice: boolean, refreshMs: nu
     direction_deg: cell.directionDeg,
     gap_label: cell.gap.label,
     gap_deg: cell.gap.gap_deg,
+    distractors: cell.distractors,
+    distractor_starts: dots.starts,
+    axis_deg: axisDeg,
+    speed_deg_s: speed,
+    cross_hidden: hideCross,
   };
   // Listening from before the onset: an answer during the stimulus counts.
   const answered = answer();
   setState("stimulus");
-  const shown = await present(() => redraw(stim), () => redraw(null), design.stimulus.duration_ms, refreshMs, design.timing.late_frame_factor);
+  const shown = await present((t) => redraw(pairAt(t), dots.at(t), hideCross), () => redraw(null), duration, refreshMs, design.timing.late_frame_factor);
   setState("response");
-  return { shown, answered: await answered, stim };
+  return { shown, answered: await answered, stim, axisDeg };
 }
 
 async function experiment() {
@@ -381,7 +470,7 @@ async function experiment() {
     for (let i = 0; i < queue.length; i++) {
       if (storeError) throw storeError;
       const { cell, repeatOf } = queue[i];
-      const { shown, answered, stim } = await run(cell, b + 1, false, refreshMs);
+      const { shown, answered, stim, axisDeg } = await run(cell, b + 1, false, refreshMs);
       number++;
       const valid = shown.invalidReason === "";
       if (!valid) {
@@ -415,6 +504,8 @@ async function experiment() {
         x_px: stim.contact[0] * pxPerCm,
         y_px: stim.contact[1] * pxPerCm,
         frame_ms: shown.frames,
+        distractors: cell.distractors,
+        ...(axisDeg === null ? {} : { axis_deg: axisDeg }),
       };
       stored = stored.then(() =>
         api.storeTrial(started.session, record).then(

@@ -25,8 +25,12 @@ export interface Presentation {
 /** Test hook: block the main thread this long in the stimulus's second frame (0: never). */
 export const stall = { nextMs: 0 };
 
-/** Show the stimulus `draw` draws for `durationMs`, then `clear`. */
-export function present(draw: () => void, clear: () => void, durationMs: number, refreshMs: number, lateFactor: number): Promise<Presentation> {
+/**
+ * Show the stimulus `draw` draws for `durationMs`, then `clear`. `draw` is called on the drawing
+ * frame with 0 and on every later frame before the clearing one with its time from the onset
+ * (ms), so a moving stimulus is drawn where it is at that frame.
+ */
+export function present(draw: (tMs: number) => void, clear: () => void, durationMs: number, refreshMs: number, lateFactor: number): Promise<Presentation> {
   return new Promise((resolve) => {
     const frames: number[] = [];
     let onset = -1;
@@ -34,7 +38,7 @@ export function present(draw: () => void, clear: () => void, durationMs: number,
     stall.nextMs = 0;
     const frame = (t: number) => {
       if (onset < 0) {
-        draw();
+        draw(0);
         onset = t;
         frames.push(0);
         requestAnimationFrame(frame);
@@ -52,6 +56,7 @@ export function present(draw: () => void, clear: () => void, durationMs: number,
         resolve(judge(onset, frames, durationMs, refreshMs, lateFactor));
         return;
       }
+      draw(t - onset);
       requestAnimationFrame(frame);
     };
     requestAnimationFrame(frame);
