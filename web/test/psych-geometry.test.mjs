@@ -34,3 +34,32 @@ test("the display flags give the paper's display: 22 inches of 1680x1050 at 35.5
   assert.ok(Math.abs(g.pxPerCmOfDisplay(1680, 1050, 22, 1) - 35.45) < 0.01);
   assert.ok(Math.abs(g.pxPerCmOfDisplay(1680, 1050, 22, 2) - 17.73) < 0.01);
 });
+
+test("a moving pair approaches, is closest at the middle, and recedes along its drawn axis", () => {
+  // 8 degrees a second over 250 ms: 1 degree out at the onset and the offset, 0 at 125 ms.
+  assert.equal(g.awayAt(0, 250, 8), 1);
+  assert.equal(g.awayAt(125, 250, 8), 0);
+  assert.equal(g.awayAt(250, 250, 8), 1);
+  assert.ok(Math.abs(g.awayAt(62.5, 250, 8) - 0.5) < 1e-12);
+  for (const axisDeg of [0, 37.5, 90, 300]) {
+    const near = g.layout(5, 90, 0.1, 1.0, "random", 70, axisDeg, 0);
+    const far = g.layout(5, 90, 0.1, 1.0, "random", 70, axisDeg, 0.75);
+    // The point between them stays put; the facing edges open by 2 x 0.75 degrees around it.
+    assert.deepEqual(far.contact, near.contact);
+    const edgeAngle = (l) => {
+      const inner = (i) => {
+        const [c, o] = [l.centres[i], l.centres[1 - i]];
+        const d = Math.hypot(o[0] - c[0], o[1] - c[1]);
+        return [c[0] + ((o[0] - c[0]) * l.radii[i]) / d, c[1] + ((o[1] - c[1]) * l.radii[i]) / d];
+      };
+      return g.angleDeg(inner(0), inner(1), 70);
+    };
+    assert.ok(Math.abs(edgeAngle(near) - 0.1) < 1e-7, `closest at ${axisDeg}`);
+    assert.ok(Math.abs(edgeAngle(far) - 1.6) < 1e-6, `receding at ${axisDeg}: ${edgeAngle(far)}`);
+    // Along the drawn axis: the centres' line points at axisDeg (or its opposite).
+    const [a, b] = far.centres;
+    const dir = (Math.atan2(b[1] - a[1], b[0] - a[0]) * 180) / Math.PI;
+    const off = (((dir - axisDeg) % 180) + 180) % 180;
+    assert.ok(off < 1e-6 || 180 - off < 1e-6, `axis ${axisDeg}: ${dir}`);
+  }
+});

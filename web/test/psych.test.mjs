@@ -221,6 +221,11 @@ describe("/psych runs an experiment end to end", { skip }, () => {
       const h = await hook(page);
       if (h.state === "error") assert.fail(`the page stopped: ${h.error}`);
       if (h.state === "done") break;
+      if (h.state === "break") {
+        await page.keyboard.press(" ");
+        await waitFor(async () => (await hook(page)).state !== "break", 5_000, 10);
+        continue;
+      }
       if (h.state === "response" && h.trial && h.trial.id > last) {
         last = h.trial.id;
         seen.push(h.trial);

@@ -51,9 +51,9 @@ pub struct TrialRecord {
     pub trial: u32,
     /// 1-based block.
     pub block: u32,
-    /// The condition's index: ((eccentricity index x directions + direction index) x gap levels
-    /// + gap level index) x distractor levels + distractor level index, as [`Design::cell`]
-    /// numbers them.
+    /// The condition's index, as [`Design::cell`] numbers them: ((eccentricity index x
+    /// directions + direction index) x gap levels + gap level index) x distractor levels plus
+    /// the distractor level's index.
     pub cell: u32,
     /// Eccentricity of the point between the discs (degrees; one of the design's).
     pub eccentricity_deg: f64,
