@@ -80,6 +80,56 @@ function rng(seed) {
 
 const hook = (page) => page.evaluate(() => window.foveal_psych && JSON.parse(JSON.stringify(window.foveal_psych)));
 
+/** Open `design`, enter `participant`, pass the calibration (`adjust`: press the arrows first)
+ * and the instructions (`expect`, if given, must match them), and start the blocks. */
+async function begin(page, url, design, participant, { adjust = false, expect = null } = {}) {
+  await page.goto(`${url}psych?design=${design}`);
+  assert.ok(await waitFor(async () => (await hook(page))?.state === "setup", 10_000), "the setup screen");
+  await page.fill("#participant", participant);
+  await page.click("#next");
+  assert.ok(await waitFor(async () => (await hook(page)).state === "calibration", 5_000), "the calibration screen");
+  if (adjust) {
+    await page.keyboard.press("ArrowRight");
+    await page.keyboard.press("ArrowLeft");
+  }
+  await page.keyboard.press("Enter");
+  assert.ok(await waitFor(async () => (await hook(page)).state === "instructions", 5_000), "the instructions");
+  if (expect) assert.match(await page.textContent("#screen"), expect);
+  await page.keyboard.press(" ");
+}
+
+/** Until the page is done: past every break, `onTrial` with each trial waiting for an answer
+ * (it answers); fails when the page stops or `seconds` pass. */
+async function answerAll(page, seconds, onTrial) {
+  let last = 0;
+  const until = Date.now() + seconds * 1000;
+  for (;;) {
+    assert.ok(Date.now() < until, `the run did not finish within ${seconds} s`);
+    const h = await hook(page);
+    if (h.state === "error") assert.fail(`the page stopped: ${h.error}`);
+    if (h.state === "done") return;
+    if (h.state === "break") {
+      await page.keyboard.press(" ");
+      await waitFor(async () => (await hook(page)).state !== "break", 5_000, 10);
+      continue;
+    }
+    if (h.state === "response" && h.trial && h.trial.id > last) {
+      last = h.trial.id;
+      await onTrial(h.trial);
+      continue;
+    }
+    await sleep(10);
+  }
+}
+
+/** A results CSV: its columns and its rows as objects by column. */
+function readRows(path) {
+  const text = readFileSync(path, "utf8");
+  const [head, ...lines] = text.trimEnd().split("\n");
+  const columns = head.split(",");
+  return { text, head, lines, columns, rows: lines.map((l) => Object.fromEntries(l.split(",").map((v, i) => [columns[i], v]))) };
+}
+
 describe("/psych runs an experiment end to end", { skip }, () => {
   let server, browser, page, results, designs;
   const pageErrors = [];
@@ -104,64 +154,34 @@ describe("/psych runs an experiment end to end", { skip }, () => {
   });
 
   test("a simulated observer runs the short design; every trial is stored as it answered", { timeout: 180_000 }, async () => {
-    await page.goto(`${server.url}psych?design=short`);
-    assert.ok(await waitFor(async () => (await hook(page))?.state === "setup", 10_000), "the setup screen");
-    await page.fill("#participant", "sim01");
-    await page.click("#next");
-    assert.ok(await waitFor(async () => (await hook(page)).state === "calibration", 5_000), "the calibration screen");
     // The card is matched: a few steps of the arrow keys, then Enter.
-    await page.keyboard.press("ArrowRight");
-    await page.keyboard.press("ArrowLeft");
-    await page.keyboard.press("Enter");
-    assert.ok(await waitFor(async () => (await hook(page)).state === "instructions", 5_000), "the instructions");
-    await page.keyboard.press(" ");
-
+    await begin(page, server.url, "short", "sim01", { adjust: true });
     const chance = rng(7);
     const answers = [];
-    let last = 0;
     let practiceSeen = 0;
     let stalled = false;
-    const until = Date.now() + 150_000;
-    for (;;) {
-      assert.ok(Date.now() < until, "the run did not finish within 150 s");
-      const h = await hook(page);
-      if (h.state === "error") assert.fail(`the page stopped: ${h.error}`);
-      if (h.state === "done") break;
-      if (h.state === "break") {
-        await page.keyboard.press(" ");
-        await waitFor(async () => (await hook(page)).state !== "break", 5_000, 10);
-        continue;
+    await answerAll(page, 150, async (t) => {
+      const apart = chance() < pApart(t.gap_deg, t.eccentricity_deg);
+      if (t.practice) practiceSeen++;
+      else answers.push({ ecc: t.eccentricity_deg, gap: t.gap_deg, label: t.gap_label, response: apart ? "apart" : "touching" });
+      // Every fifth answer by mouse button (right: apart, left: touching), the others by key.
+      if (answers.length % 5 === 4) await page.mouse.click(700, 700, { button: apart ? "right" : "left" });
+      else await page.keyboard.press(apart ? "j" : "f");
+      // Stall the third main trial's stimulus: its frames come late.
+      if (!stalled && answers.length === 2) {
+        await page.evaluate(() => window.foveal_psych.stallNextStimulus(120));
+        stalled = true;
       }
-      if (h.state === "response" && h.trial && h.trial.id > last) {
-        const t = h.trial;
-        last = t.id;
-        const apart = chance() < pApart(t.gap_deg, t.eccentricity_deg);
-        if (t.practice) practiceSeen++;
-        else answers.push({ ecc: t.eccentricity_deg, gap: t.gap_deg, label: t.gap_label, response: apart ? "apart" : "touching" });
-        // Every fifth answer by mouse button (right: apart, left: touching), the others by key.
-        if (answers.length % 5 === 4) await page.mouse.click(700, 700, { button: apart ? "right" : "left" });
-        else await page.keyboard.press(apart ? "j" : "f");
-        // Stall the third main trial's stimulus: its frames come late.
-        if (!stalled && answers.length === 2) {
-          await page.evaluate(() => window.foveal_psych.stallNextStimulus(120));
-          stalled = true;
-        }
-        continue;
-      }
-      await sleep(10);
-    }
+    });
     assert.equal(practiceSeen, SHORT.practice_trials);
     assert.deepEqual(pageErrors, []);
 
     const final = await hook(page);
     assert.equal(final.results, "sim01_1.csv");
-    const text = readFileSync(join(results, "sim01_1.csv"), "utf8");
-    const [head, ...lines] = text.trimEnd().split("\n");
-    const columns = head.split(",");
+    const { text, head, lines, columns, rows } = readRows(join(results, "sim01_1.csv"));
     for (const c of ["participant", "eccentricity_deg", "gap_deg", "response", "valid", "invalid_reason", "repeat_of", "duration_ms", "frames", "frame_ms"]) {
       assert.ok(columns.includes(c), `column ${c} in ${head}`);
     }
-    const rows = lines.map((l) => Object.fromEntries(l.split(",").map((v, i) => [columns[i], v])));
     // One row per answer, in order, as answered.
     assert.equal(rows.length, answers.length, text);
     assert.equal(final.stored, rows.length);
@@ -204,41 +224,14 @@ describe("/psych runs an experiment end to end", { skip }, () => {
   });
 
   test("a pair meeting in motion among distractors is stored with its level and its drawn axis", { timeout: 120_000 }, async () => {
-    await page.goto(`${server.url}psych?design=moving`);
-    assert.ok(await waitFor(async () => (await hook(page))?.state === "setup", 10_000), "the setup screen");
-    await page.fill("#participant", "sim02");
-    await page.click("#next");
-    assert.ok(await waitFor(async () => (await hook(page)).state === "calibration", 5_000), "the calibration screen");
-    await page.keyboard.press("Enter");
-    assert.ok(await waitFor(async () => (await hook(page)).state === "instructions", 5_000), "the instructions");
-    assert.match(await page.textContent("#screen"), /move towards each other/);
-    await page.keyboard.press(" ");
+    await begin(page, server.url, "moving", "sim02", { expect: /move towards each other/ });
     const seen = [];
-    let last = 0;
-    const until = Date.now() + 100_000;
-    for (;;) {
-      assert.ok(Date.now() < until, "the run did not finish within 100 s");
-      const h = await hook(page);
-      if (h.state === "error") assert.fail(`the page stopped: ${h.error}`);
-      if (h.state === "done") break;
-      if (h.state === "break") {
-        await page.keyboard.press(" ");
-        await waitFor(async () => (await hook(page)).state !== "break", 5_000, 10);
-        continue;
-      }
-      if (h.state === "response" && h.trial && h.trial.id > last) {
-        last = h.trial.id;
-        seen.push(h.trial);
-        await page.keyboard.press(h.trial.gap_deg > 0 ? "j" : "f");
-        continue;
-      }
-      await sleep(10);
-    }
+    await answerAll(page, 100, async (t) => {
+      seen.push(t);
+      await page.keyboard.press(t.gap_deg > 0 ? "j" : "f");
+    });
     assert.deepEqual(pageErrors, []);
-    const text = readFileSync(join(results, "sim02_1.csv"), "utf8");
-    const [head, ...lines] = text.trimEnd().split("\n");
-    const columns = head.split(",");
-    const rows = lines.map((l) => Object.fromEntries(l.split(",").map((v, i) => [columns[i], v])));
+    const { text, rows } = readRows(join(results, "sim02_1.csv"));
     assert.equal(rows.length, seen.length, text);
     rows.forEach((r, i) => {
       const t = seen[i];
