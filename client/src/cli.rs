@@ -94,6 +94,24 @@ pub struct PsychFitArgs {
     /// Fit the pooled trials only, not each participant apart.
     #[arg(long)]
     pooled_only: bool,
+    /// Fit only the trials whose COLUMN holds VALUE, as written in the CSV (repeatable; all must
+    /// hold): `--where distractors=8` fits one distractor level of experiment 3 or 4,
+    /// `--where design=experiment2` one experiment of several files.
+    #[arg(long = "where", value_name = "COLUMN=VALUE", value_parser = parse_selection)]
+    selection: Vec<(String, String)>,
+}
+
+fn parse_selection(text: &str) -> Result<(String, String), String> {
+    let (c, v) = text
+        .split_once('=')
+        .ok_or_else(|| format!("{text:?} is not COLUMN=VALUE"))?;
+    let (c, v) = (c.trim(), v.trim());
+    if c.is_empty() || v.is_empty() || c.contains(',') || v.contains(',') {
+        return Err(format!(
+            "{text:?}: COLUMN and VALUE must be non-empty, without commas"
+        ));
+    }
+    Ok((c.to_owned(), v.to_owned()))
 }
 
 fn parse_breaks(text: &str) -> Result<(f64, f64), String> {
@@ -171,6 +189,7 @@ impl PsychFitArgs {
         psych::FitCommand {
             results: self.results.clone(),
             out: self.out.clone(),
+            selection: self.selection.clone(),
             options: foveal_psych::report::Options {
                 replicates: self.replicates as usize,
                 folds: self.folds as usize,

@@ -75,6 +75,44 @@ fn simulated_viewers_are_fitted_and_the_model_string_schedules() {
     );
     let svg = std::fs::read_to_string(fitted.join("fit.svg")).expect("fit.svg");
     assert!(svg.starts_with("<svg") && svg.contains("<circle"));
+
+    // One condition apart (`--where`): here one participant's rows; a value no row holds, a
+    // column the file lacks and a malformed selection are refused by name.
+    let path = trials.to_str().expect("utf-8 path");
+    let fit_where = |selection: &str| {
+        foveal(&[
+            "psych",
+            "fit",
+            path,
+            "--replicates",
+            "20",
+            "--pooled-only",
+            "--where",
+            selection,
+        ])
+    };
+    let out = fit_where("participant=sim1001");
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{report}");
+    assert!(
+        report.starts_with("Trials fitted: those with participant = sim1001 (1200 trials).")
+            && report.contains("## pooled (1200 trials)"),
+        "{report}"
+    );
+    let out = fit_where("participant=nobody");
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("no valid trial has participant = nobody"),
+        "{stderr}"
+    );
+    let out = fit_where("distractors=8");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("no `distractors` column"), "{stderr}");
+    let out = fit_where("distractors");
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("is not COLUMN=VALUE"), "{stderr}");
     std::fs::remove_dir_all(&dir).ok();
 }
 

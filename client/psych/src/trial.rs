@@ -39,6 +39,14 @@ pub enum TrialError {
         /// The column.
         column: &'static str,
     },
+    /// A column a selection names is missing.
+    #[error("{file}: no `{column}` column to select trials on")]
+    MissingSelected {
+        /// The file.
+        file: String,
+        /// The column.
+        column: String,
+    },
     /// A field does not parse or is out of range.
     #[error("{file} line {line}: `{column}` = `{value}`: {why}")]
     Field {
@@ -63,6 +71,17 @@ pub const MAX_DEGREES: f64 = 180.0;
 
 /// The trials of a results CSV's text (`file` names it in errors).
 pub fn parse_csv(file: &str, text: &str) -> Result<Vec<Trial>, TrialError> {
+    parse_csv_where(file, text, &[])
+}
+
+/// [`parse_csv`], keeping only the rows whose every `(column, value)` of `selection` holds (the
+/// field as written, e.g. `distractors` = `8` or `design` = `experiment4`): one condition of an
+/// experiment fitted apart from the others.
+pub fn parse_csv_where(
+    file: &str,
+    text: &str,
+    selection: &[(String, String)],
+) -> Result<Vec<Trial>, TrialError> {
     let mut lines = text
         .lines()
         .enumerate()
@@ -87,6 +106,19 @@ pub fn parse_csv(file: &str, text: &str) -> Result<Vec<Trial>, TrialError> {
         column(REQUIRED[3])?,
     ];
     let valid = names.iter().position(|n| *n == "valid");
+    let selected = selection
+        .iter()
+        .map(|(c, v)| {
+            names
+                .iter()
+                .position(|n| n == c)
+                .map(|i| (i, v.as_str()))
+                .ok_or_else(|| TrialError::MissingSelected {
+                    file: file.into(),
+                    column: c.clone(),
+                })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
     let mut trials = Vec::new();
     for (i, line) in lines {
         let fields: Vec<&str> = line.split(',').map(|f| f.trim()).collect();
@@ -106,6 +138,12 @@ pub fn parse_csv(file: &str, text: &str) -> Result<Vec<Trial>, TrialError> {
             value: value.chars().take(40).collect(),
             why,
         };
+        if selected
+            .iter()
+            .any(|&(i, v)| fields.get(i).copied() != Some(v))
+        {
+            continue;
+        }
         if let Some(v) = valid {
             match field(v, "valid")? {
                 "1" | "true" | "TRUE" | "True" => {}
@@ -164,6 +202,20 @@ mod tests {
         let trials = parse_csv("s.csv", text).expect("parses");
         assert_eq!(trials.len(), 2, "the invalid trial is dropped");
         assert_eq!(parse_csv("s.csv", &to_csv(&trials)), Ok(trials));
+        // One condition apart: only the rows whose fields match, a missing column named.
+        let text = "participant,eccentricity_deg,gap_deg,response,distractors\n\
+                    p1,2,0.1,apart,4\np1,5,0.1,touching,8\np1,10,0.2,apart,8\n";
+        let sel = |c: &str, v: &str| vec![(c.to_string(), v.to_string())];
+        let eight = parse_csv_where("s.csv", text, &sel("distractors", "8")).expect("parses");
+        assert_eq!(eight.len(), 2);
+        assert!(eight.iter().all(|t| t.eccentricity_deg > 2.0));
+        assert!(
+            parse_csv_where("s.csv", text, &sel("distractors", "16"))
+                .expect("parses")
+                .is_empty()
+        );
+        let e = parse_csv_where("s.csv", text, &sel("design", "x")).expect_err("no column");
+        assert!(e.to_string().contains("no `design` column"), "{e}");
     }
 
     #[test]

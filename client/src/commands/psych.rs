@@ -8,7 +8,7 @@ use foveal_psych::fit::cells;
 use foveal_psych::model::{Function, Observer};
 use foveal_psych::report::{self, Options};
 use foveal_psych::simulate::{self as simulated, Design, coverage};
-use foveal_psych::trial::{parse_csv, to_csv};
+use foveal_psych::trial::{parse_csv_where, to_csv};
 
 use super::{CommandError, Outcome};
 
@@ -19,6 +19,8 @@ pub struct FitCommand {
     pub results: Vec<PathBuf>,
     /// Where the report (`fit.md`), the figure (`fit.svg`) and the model (`model.txt`) go.
     pub out: Option<PathBuf>,
+    /// Only the trials whose `(column, value)` pairs all hold (`--where`); empty: every trial.
+    pub selection: Vec<(String, String)>,
     /// How to fit.
     pub options: Options,
 }
@@ -56,13 +58,32 @@ pub fn fit(command: &FitCommand) -> Result<Outcome, CommandError> {
             source,
         })?;
         trials.extend(
-            parse_csv(&path.display().to_string(), &text)
+            parse_csv_where(&path.display().to_string(), &text, &command.selection)
                 .map_err(|e| CommandError::Usage(e.to_string()))?,
         );
     }
+    let selected: Vec<String> = command
+        .selection
+        .iter()
+        .map(|(c, v)| format!("{c} = {v}"))
+        .collect();
+    if trials.is_empty() && !selected.is_empty() {
+        return Err(CommandError::Usage(format!(
+            "foveal psych fit: no valid trial has {} in the {} file(s) read",
+            selected.join(" and "),
+            command.results.len()
+        )));
+    }
     let fits = report::fit_groups(&trials, &command.options)
         .map_err(|e| CommandError::Usage(format!("foveal psych fit: {e}")))?;
-    let text = report::markdown(&fits, &command.options);
+    let mut text = report::markdown(&fits, &command.options);
+    if !selected.is_empty() {
+        text = format!(
+            "Trials fitted: those with {} ({} trials).\n\n{text}",
+            selected.join(" and "),
+            trials.len()
+        );
+    }
     let pooled = &fits[0];
     let mut stdout = std::io::stdout().lock();
     write!(stdout, "{text}").map_err(CommandError::WriteStdout)?;

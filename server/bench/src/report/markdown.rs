@@ -42,8 +42,13 @@ pub fn describe(cfg: &StudyConfig) -> String {
     );
     let _ = writeln!(
         s,
-        "- perceptual model (schedule and measure): {}; priority-queue threshold {}°; audit on",
+        "- perceptual model (schedule and measure): {}{}; priority-queue threshold {}°; audit on",
         model_name(cfg),
+        if cfg.f1 {
+            " (the F1 case: F1 in pixels, both)"
+        } else {
+            ""
+        },
         cfg.threshold_deg
     );
     if cfg.table {
