@@ -245,10 +245,11 @@ const OTHER_VIEWERS: [ViewerModel; 3] = [
 /// The N of foveal's own endpoint: 10,000 where the open loop ran it, else its largest N (a
 /// `--quick` study runs 500 alone), so a smaller protocol still answers the claim at its scale.
 fn foveal_n(open_csv: &Csv) -> u32 {
+    let col = open_csv.col("n");
     let ns: Vec<u32> = open_csv
         .rows
         .iter()
-        .filter_map(|r| r.first().and_then(|n| n.parse().ok()))
+        .filter_map(|r| col.and_then(|c| r.get(c)).and_then(|n| n.parse().ok()))
         .collect();
     if ns.contains(&10_000) {
         10_000

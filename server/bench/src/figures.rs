@@ -100,6 +100,18 @@ fn growth_over_n(
 fn ratio_over_n(
     gs: &[Group<'_>],
     modes: &[(u32, Mode, Mode)],
+    ks: (SchedulerKind, SchedulerKind),
+    m: Metric,
+    name: String,
+) -> Series {
+    ratio_over_n_in(gs, Part::Table, modes, ks, m, name)
+}
+
+/// [`ratio_over_n`] in any closed-loop part.
+fn ratio_over_n_in(
+    gs: &[Group<'_>],
+    part: Part,
+    modes: &[(u32, Mode, Mode)],
     (ka, kb): (SchedulerKind, SchedulerKind),
     m: Metric,
     name: String,
@@ -109,8 +121,8 @@ fn ratio_over_n(
         points: modes
             .iter()
             .filter_map(|&(n, ma, mb)| {
-                let a = find(gs, Part::Table, n, ma, ka)?;
-                let b = find(gs, Part::Table, n, mb, kb)?;
+                let a = find(gs, part, n, ma, ka)?;
+                let b = find(gs, part, n, mb, kb)?;
                 Some((f64::from(n), paired_ratio(a, b, m).interval()))
             })
             .collect(),
@@ -429,18 +441,9 @@ pub fn f1_figures(cfg: &StudyConfig, gs: &[Group<'_>]) -> Vec<(String, Figure)> 
         }
         panel(title.into(), y, series)
     };
-    let ratio = |name: &str, m: Metric| Series {
-        name: name.into(),
-        points: modes
-            .iter()
-            .filter_map(|&(n, mode)| {
-                let a = find(gs, Part::F1, n, mode, sorted)?;
-                let b = find(gs, Part::F1, n, mode, rr)?;
-                Some((f64::from(n), paired_ratio(a, b, m).interval()))
-            })
-            .collect(),
-        dashed: false,
-    };
+    let same: Vec<(u32, Mode, Mode)> = modes.iter().map(|&(n, m)| (n, m, m)).collect();
+    let ratio =
+        |name: &str, m: Metric| ratio_over_n_in(gs, Part::F1, &same, (sorted, rr), m, name.into());
     let mut ratios = panel(
         "Sorted-sequential / round-robin (paired by seed)".into(),
         "ratio of means".into(),

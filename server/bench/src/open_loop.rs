@@ -668,7 +668,8 @@ struct ScheduleRun {
     spec: SchedulerSpec,
     schedule_model: PerceptualModel,
     feed: GazeFeed,
-    viewer: ViewerModel,
+    /// Who it is told about: an index into the run's viewers.
+    viewer: usize,
     /// Index into the union of the parts' budgets.
     budget: usize,
     /// Its configuration (the collider is built for its budget's batch only).
@@ -861,6 +862,7 @@ pub fn run_frames_parts(
                 let mut per_sched = Vec::new();
                 for (si, spec) in c.schedulers.iter().enumerate() {
                     let (model, feed, viewer) = schedule_key(spec, c);
+                    let viewer = index_of(&mut viewers, viewer);
                     let same = |r: &ScheduleRun| {
                         r.budget == ub
                             && r.spec.kind == spec.kind
@@ -1101,7 +1103,7 @@ pub fn run_frames_parts(
                 // Rotate the order so no scheduler always runs first into cold caches.
                 let u = here[(j + f as usize) % here.len()];
                 let run = &mut runs[u];
-                let vi = viewers.iter().position(|&v| v == run.viewer).unwrap_or(0);
+                let vi = run.viewer;
                 let fixation = fixes.get(vi).copied().unwrap_or(centre);
                 let fed = match run.feed {
                     GazeFeed::Viewer => fixation,
